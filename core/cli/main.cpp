@@ -1,1 +1,65 @@
-int main() { return 0; }
+// zomeify: the command-line front end (design.md §5). Bad input → one line on stderr, exit 1.
+#include <cstring>
+#include <exception>
+#include <iostream>
+#include <new>
+
+#include "core/base/errors.h"
+#include "core/cli/commands.h"
+
+namespace zomeify::cli {
+
+const std::vector<Command>& commands()
+{
+    static const std::vector<Command> list = {
+        {"parts", "parts MODEL [--json | --csv]          parts list of a .zome.json or .vef model", cmd_parts},
+        {"convert", "convert MODEL -o OUT                   between model formats (.zome.json, .vef)", cmd_convert},
+    };
+    return list;
+}
+
+} // namespace zomeify::cli
+
+namespace {
+
+int usage(std::ostream& os)
+{
+    os << "usage: zomeify COMMAND ...\n";
+    for (const auto& c : zomeify::cli::commands())
+        os << "  zomeify " << c.usage << "\n";
+    return 2;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    if (argc < 2)
+        return usage(std::cerr);
+    if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))
+    {
+        usage(std::cout);
+        return 0;
+    }
+    const std::vector<std::string> rest(argv + 2, argv + argc);
+    for (const auto& c : zomeify::cli::commands())
+    {
+        if (c.name != std::string(argv[1]))
+            continue;
+        try
+        {
+            return c.run(rest);
+        }
+        catch (const std::bad_alloc&)
+        {
+            std::cerr << "zomeify: out of memory\n";
+        }
+        catch (const std::exception& e)
+        {
+            std::cerr << "zomeify: " << e.what() << "\n";
+        }
+        return 1;
+    }
+    std::cerr << "zomeify: unknown command '" << argv[1] << "'\n";
+    return usage(std::cerr);
+}

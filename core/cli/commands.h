@@ -1,0 +1,26 @@
+#pragma once
+//! \file commands.h
+//! The CLI's commands (design.md §5), one file each. Each returns the process exit status and
+//! throws the core's exceptions for bad input; main() turns those into one-line messages.
+
+#include <string>
+#include <vector>
+
+namespace zomeify::cli {
+
+using CommandArgs = std::vector<std::string>;
+
+int cmd_parts(const CommandArgs& args);   // cmd_parts.cpp
+int cmd_convert(const CommandArgs& args); // cmd_convert.cpp
+
+struct Command
+{
+    const char* name;
+    const char* usage;
+    int (*run)(const CommandArgs&);
+};
+
+//! Every command, in the order `zomeify --help` lists them.
+const std::vector<Command>& commands();
+
+} // namespace zomeify::cli
