@@ -1,0 +1,28 @@
+// zomeify convert MODEL -o OUT [-o OUT2 ...]: between model formats, chosen by extension.
+#include <iostream>
+
+#include "core/base/errors.h"
+#include "core/cli/args.h"
+#include "core/cli/commands.h"
+#include "core/io/model_io.h"
+
+namespace zomeify::cli {
+
+int cmd_convert(const CommandArgs& argv)
+{
+    const Args args(argv, {"-o"}, {});
+    args.expect_positional(1, "one model file: zomeify convert MODEL -o OUT");
+    const std::vector<std::string> outputs = args.values("-o");
+    if (outputs.empty())
+        throw InvalidInputError("missing -o OUT");
+    const ZomeModel model = read_model_file(args.positional()[0]);
+    for (const std::string& out : outputs)
+    {
+        write_model_file(out, model);
+        std::cout << "wrote " << out << " (" << model.nodes.size() << " balls, " << model.struts.size()
+                  << " struts)\n";
+    }
+    return 0;
+}
+
+} // namespace zomeify::cli

@@ -1,0 +1,21 @@
+#pragma once
+//! \file model_io.h
+//! Model reading and writing chosen by file name extension: `.zome.json` (also `.json`) and `.vef`.
+//! The CLI and the wasm session both come through here.
+
+#include <string>
+#include <string_view>
+
+#include "core/zome/model.h"
+
+namespace zomeify {
+
+//! Reads a model file; InvalidInputError/IoError with a one-line message on failure.
+ZomeModel read_model_file(const std::string& path);
+//! Reads a model from bytes; `file_name` decides the format by its extension.
+ZomeModel read_model_buffer(std::string_view bytes, const std::string& file_name);
+//! The model in the format named by the extension of `file_name`.
+std::string write_model_buffer(const ZomeModel& model, const std::string& file_name);
+void write_model_file(const std::string& path, const ZomeModel& model);
+
+} // namespace zomeify
