@@ -10,6 +10,7 @@ namespace zomeify::cli {
 
 using CommandArgs = std::vector<std::string>;
 
+int cmd_inspect(const CommandArgs& args); // cmd_inspect.cpp
 int cmd_parts(const CommandArgs& args);   // cmd_parts.cpp
 int cmd_convert(const CommandArgs& args); // cmd_convert.cpp
 

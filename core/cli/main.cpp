@@ -12,6 +12,7 @@ namespace zomeify::cli {
 const std::vector<Command>& commands()
 {
     static const std::vector<Command> list = {
+        {"inspect", "inspect MESH [--json]                 vertices, faces, closed, manifold, components, genus, bbox", cmd_inspect},
         {"parts", "parts MODEL [--json | --csv]          parts list of a .zome.json or .vef model", cmd_parts},
         {"convert", "convert MODEL -o OUT                   between model formats (.zome.json, .vef)", cmd_convert},
     };

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include <Eigen/Geometry>
+
 #include "core/base/errors.h"
 #include "core/surface/read_mesh.h"
 #include "core/surface/topology.h"

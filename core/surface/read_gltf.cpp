@@ -5,11 +5,11 @@
 #include <limits>
 
 #include <Eigen/Geometry>
-#include <tiny_gltf.h>
 
 #include "core/base/errors.h"
 #include "core/surface/byte_order.h"
 #include "core/surface/readers.h"
+#include "core/surface/tiny_gltf_config.h"
 
 namespace zomeify::detail {
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include <Eigen/Geometry>
+
 namespace zomeify {
 
 namespace {
