@@ -1,0 +1,144 @@
+#include "core/mesh/zome_mesh.h"
+
+#include <sstream>
+
+#include "core/mesh/topology_error.h"
+
+namespace zomeify {
+
+namespace {
+
+std::string describe(const ZVec& p)
+{
+    std::ostringstream os;
+    os << p;
+    return os.str();
+}
+
+} // namespace
+
+ZomeMesh::ZomeMesh()
+{
+    zpos_ = add_vertex_property<ZVec>("v:zpos");
+    zvec_ = add_halfedge_property<uint8_t>("h:zvector", kNoZomeVector);
+}
+
+ZomeMesh::ZomeMesh(const ZomeMesh& other) : SurfaceMesh(other), index_(other.index_)
+{
+    bind_properties();
+}
+
+ZomeMesh& ZomeMesh::operator=(const ZomeMesh& other)
+{
+    if (this == &other)
+        return *this;
+    SurfaceMesh::operator=(other);
+    index_ = other.index_;
+    bind_properties();
+    return *this;
+}
+
+void ZomeMesh::bind_properties()
+{
+    zpos_ = get_vertex_property<ZVec>("v:zpos");
+    zvec_ = get_halfedge_property<uint8_t>("h:zvector");
+}
+
+Vertex ZomeMesh::add_vertex(const ZVec& p)
+{
+    if (!is_position_free(p))
+        throw TopologyError("add_vertex: a node already sits at " + describe(p));
+    const Vertex v = SurfaceMesh::add_vertex();
+    zpos_[v] = p;
+    index_.emplace(p, v);
+    return v;
+}
+
+Vertex ZomeMesh::add_vertex_unchecked(const ZVec& p)
+{
+    const Vertex v = SurfaceMesh::add_vertex();
+    zpos_[v] = p;
+    index_.emplace(p, v);
+    return v;
+}
+
+void ZomeMesh::move_vertex(Vertex v, const ZVec& p)
+{
+    if (zpos_[v] == p)
+        return;
+    if (!is_position_free(p))
+        throw TopologyError("move_vertex: a node already sits at " + describe(p));
+    const auto it = index_.find(zpos_[v]);
+    if (it != index_.end() && it->second == v)
+        index_.erase(it);
+    zpos_[v] = p;
+    index_.emplace(p, v);
+    const Halfedge start = halfedge(v);
+    if (!start.is_valid())
+        return;
+    Halfedge h = start;
+    do
+    {
+        update_vector_id(h);
+        update_vector_id(opposite(h));
+        h = ccw_rotated(h);
+    } while (h != start);
+}
+
+Halfedge ZomeMesh::find_slot(Vertex v, int s) const
+{
+    const Halfedge start = halfedge(v);
+    if (!start.is_valid())
+        return {};
+    Halfedge h = start;
+    do
+    {
+        if (slot(h) == s)
+            return h;
+        h = ccw_rotated(h);
+    } while (h != start);
+    return {};
+}
+
+void ZomeMesh::update_vector_id(Halfedge h)
+{
+    const int id = vector_id_of(vector(h));
+    zvec_[h] = id < 0 ? kNoZomeVector : static_cast<uint8_t>(id);
+}
+
+void ZomeMesh::on_edge_added(Edge e)
+{
+    // One table lookup per edge; the opposite side follows from the slot pairing (s ^ 1).
+    const Halfedge h = halfedge(e, 0);
+    update_vector_id(h);
+    const uint8_t id = zvec_[h];
+    zvec_[opposite(h)] = id == kNoZomeVector
+        ? kNoZomeVector
+        : static_cast<uint8_t>(zomeify::vector_id(opposite_slot(vector_slot(id)), vector_size(id)));
+}
+
+void ZomeMesh::on_vertex_removing(Vertex v)
+{
+    const auto it = index_.find(zpos_[v]);
+    if (it != index_.end() && it->second == v)
+        index_.erase(it);
+}
+
+void ZomeMesh::on_compacted()
+{
+    rebuild_index();
+}
+
+void ZomeMesh::rebuild_index()
+{
+    index_.clear();
+    index_.reserve(n_vertices());
+    for (MeshIndex i = 0; i < vertices_size(); ++i)
+    {
+        const Vertex v(i);
+        if (!is_deleted(v))
+            index_.emplace(zpos_[v], v);
+    }
+}
+
+} // namespace zomeify
