@@ -1,0 +1,228 @@
+#include "core/geom/closest_point.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "core/base/errors.h"
+
+namespace zomeify {
+namespace {
+
+TriangleMesh validated(TriangleMesh mesh)
+{
+    if (mesh.triangles.empty())
+    {
+        throw InvalidInputError("surface has no triangles");
+    }
+    for (const Vec3& p : mesh.positions)
+    {
+        if (!p.allFinite())
+        {
+            throw InvalidInputError("surface has a non-finite vertex coordinate");
+        }
+    }
+    for (size_t t = 0; t < mesh.triangles.size(); ++t)
+    {
+        for (const uint32_t v : mesh.triangles[t])
+        {
+            if (v >= mesh.positions.size())
+            {
+                throw InvalidInputError("surface triangle " + std::to_string(t) + " uses vertex " +
+                                        std::to_string(v) + ", out of range");
+            }
+        }
+    }
+    return mesh;
+}
+
+// Angle between two edge vectors; atan2 stays accurate for angles near 0 and pi, where acos of a
+// dot product would not.
+double corner_angle(const Vec3& e1, const Vec3& e2)
+{
+    return std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+}
+
+float pruning_bound(double best_distance_squared)
+{
+    const double x = best_distance_squared * (1.0 + 1e-6);
+    const float f = static_cast<float>(x);
+    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+// Squared distance from (px, py, pz) to child `i`'s box of `node`.
+inline float box_distance_squared(const BvhNode& node, int i, float px, float py, float pz)
+{
+    const float dx = std::max(std::max(node.min_x[i] - px, px - node.max_x[i]), 0.0f);
+    const float dy = std::max(std::max(node.min_y[i] - py, py - node.max_y[i]), 0.0f);
+    const float dz = std::max(std::max(node.min_z[i] - pz, pz - node.max_z[i]), 0.0f);
+    return dx * dx + dy * dy + dz * dz;
+}
+
+} // namespace
+
+SurfaceProjector::SurfaceProjector(TriangleMesh mesh, const BvhOptions& options)
+    : mesh_(validated(std::move(mesh))), bvh_(triangle_boxes(mesh_), options)
+{
+    vertex_normals_.assign(mesh_.positions.size(), Vec3::Zero());
+    face_normals_.reserve(mesh_.triangles.size());
+    for (const auto& tri : mesh_.triangles)
+    {
+        const Vec3& p0 = mesh_.positions[tri[0]];
+        const Vec3& p1 = mesh_.positions[tri[1]];
+        const Vec3& p2 = mesh_.positions[tri[2]];
+        const Vec3 n = (p1 - p0).cross(p2 - p0);
+        const double len = n.norm();
+        const Vec3 unit = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
+        face_normals_.push_back(unit);
+        vertex_normals_[tri[0]] += corner_angle(p1 - p0, p2 - p0) * unit;
+        vertex_normals_[tri[1]] += corner_angle(p2 - p1, p0 - p1) * unit;
+        vertex_normals_[tri[2]] += corner_angle(p0 - p2, p1 - p2) * unit;
+    }
+    for (Vec3& n : vertex_normals_)
+    {
+        const double len = n.norm();
+        n = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
+    }
+    packed_.reserve(mesh_.triangles.size());
+    for (const uint32_t t : bvh_.order())
+    {
+        const auto& tri = mesh_.triangles[t];
+        packed_.push_back({mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]], t});
+    }
+}
+
+ClosestPoint SurfaceProjector::project(const Vec3& p) const
+{
+    TrianglePoint best{Vec3::Zero(), Vec3::Zero(), std::numeric_limits<double>::infinity(), TriangleFeature::face};
+    uint32_t best_id = 0;
+    search(p, best, best_id);
+    return finish(best, best_id);
+}
+
+ClosestPoint SurfaceProjector::project(const Vec3& p, uint32_t hint) const
+{
+    if (hint >= mesh_.triangles.size())
+    {
+        return project(p);
+    }
+    const auto& tri = mesh_.triangles[hint];
+    TrianglePoint best =
+        closest_point_on_triangle(p, mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]]);
+    uint32_t best_id = hint;
+    search(p, best, best_id);
+    return finish(best, best_id);
+}
+
+void SurfaceProjector::search(const Vec3& p, TrianglePoint& best, uint32_t& best_id) const
+{
+    struct Entry
+    {
+        uint32_t child;
+        uint32_t count;
+        float distance_squared;
+    };
+    // One far child is pushed per level, plus the near one that is popped right away.
+    Entry stack[Bvh::kMaxDepth + 2];
+    int top = 0;
+
+    const BvhNode* nodes = bvh_.nodes().data();
+    const PackedTriangle* triangles = packed_.data();
+    const Vec3& origin = bvh_.origin();
+    const float px = static_cast<float>(p.x() - origin.x());
+    const float py = static_cast<float>(p.y() - origin.y());
+    const float pz = static_cast<float>(p.z() - origin.z());
+    // Box distances are lower bounds up to float rounding (boxes rounded outward and padded);
+    // prune only boxes farther than the best triangle so far plus a relative slack that covers
+    // the rounding of the query point and of the distance itself.
+    float bound = pruning_bound(best.distance_squared);
+
+    uint32_t node_index = 0;
+    for (;;)
+    {
+        const BvhNode& node = nodes[node_index];
+        const float d0 = box_distance_squared(node, 0, px, py, pz);
+        const float d1 = box_distance_squared(node, 1, px, py, pz);
+        const int near = d1 < d0 ? 1 : 0;
+        const int far = 1 - near;
+        const float dnear = near == 0 ? d0 : d1;
+        const float dfar = near == 0 ? d1 : d0;
+        if (dfar <= bound && node.child[far] != BvhNode::kInvalid)
+        {
+            stack[top++] = {node.child[far], node.count[far], dfar};
+        }
+        if (dnear <= bound && node.child[near] != BvhNode::kInvalid)
+        {
+            stack[top++] = {node.child[near], node.count[near], dnear};
+        }
+        // Pop the nearest pending entry that may still hold something closer; leaves are tested
+        // on the spot, an inner node ends the loop and is expanded above.
+        bool descend = false;
+        while (top > 0)
+        {
+            const Entry e = stack[--top];
+            if (e.distance_squared > bound)
+            {
+                continue;
+            }
+            if (e.count == 0)
+            {
+                node_index = e.child;
+                descend = true;
+                break;
+            }
+            for (uint32_t k = e.child; k < e.child + e.count; ++k)
+            {
+                const PackedTriangle& t = triangles[k];
+                const TrianglePoint r = closest_point_on_triangle(p, t.a, t.b, t.c);
+                if (r.distance_squared < best.distance_squared)
+                {
+                    best = r;
+                    best_id = t.id;
+                    bound = pruning_bound(best.distance_squared);
+                }
+            }
+        }
+        if (!descend)
+        {
+            return;
+        }
+    }
+}
+
+ClosestPoint SurfaceProjector::finish(const TrianglePoint& best, uint32_t id) const
+{
+    ClosestPoint out;
+    out.point = best.point;
+    out.barycentric = best.barycentric;
+    out.distance_squared = best.distance_squared;
+    out.triangle = id;
+    out.feature = best.feature;
+    const auto& tri = mesh_.triangles[id];
+    const Vec3 n = best.barycentric[0] * vertex_normals_[tri[0]] + best.barycentric[1] * vertex_normals_[tri[1]] +
+                   best.barycentric[2] * vertex_normals_[tri[2]];
+    const double len = n.norm();
+    if (len > 1e-12)
+    {
+        out.normal = n / len;
+    }
+    else if (face_normals_[id].squaredNorm() > 0.0)
+    {
+        out.normal = face_normals_[id];
+    }
+    else
+    {
+        // A zero-area triangle whose corners cancel: the largest-weight corner's normal is the
+        // best local guess; the default +z remains only for an isolated degenerate triangle.
+        int k = 0;
+        best.barycentric.maxCoeff(&k);
+        if (vertex_normals_[tri[k]].squaredNorm() > 0.0)
+        {
+            out.normal = vertex_normals_[tri[k]];
+        }
+    }
+    return out;
+}
+
+} // namespace zomeify

@@ -1,0 +1,75 @@
+#pragma once
+//! \file closest_point.h
+//! π(p): the closest point on the input surface S and the surface normal there (design §3.3,
+//! §3.7). The hot query of the annealer's distance and orientation energies.
+
+#include <cstdint>
+#include <vector>
+
+#include "core/geom/bvh.h"
+#include "core/geom/point_triangle.h"
+#include "core/geom/triangle_mesh.h"
+
+namespace zomeify {
+
+//! The answer of one π(p) query.
+struct ClosestPoint
+{
+    Vec3 point = Vec3::Zero();       //!< π(p)
+    Vec3 normal = Vec3::UnitZ();     //!< unit outward normal at π(p), see SurfaceProjector
+    Vec3 barycentric = Vec3::Zero(); //!< weights of the triangle's corners at π(p)
+    double distance_squared = 0.0;   //!< ‖p − π(p)‖²
+    uint32_t triangle = 0;           //!< index into mesh().triangles
+    TriangleFeature feature = TriangleFeature::face; //!< where on the triangle π(p) lies
+};
+
+//! Closest-point queries on a triangle mesh through a BVH. Construction copies the mesh, computes
+//! angle-weighted vertex normals and builds the BVH; afterwards the object is immutable and
+//! `project` may be called from any number of threads at once (no shared mutable state, no heap
+//! allocation per query).
+//!
+//! The normal is the angle-weighted vertex normals (Thürmer & Wüthrich) of the closest triangle,
+//! interpolated with the barycentrics of π(p) and normalised (design §3.3). Where that sum
+//! vanishes (opposite corner normals on a paper-thin part) the face normal is used instead.
+class SurfaceProjector
+{
+public:
+    //! Throws InvalidInputError if the mesh has no triangles, an index out of range or a
+    //! non-finite coordinate. The mesh should be closed and oriented outward (faces CCW).
+    explicit SurfaceProjector(TriangleMesh mesh, const BvhOptions& options = {});
+
+    //! π(p) by nearest-first BVH traversal. Exact up to rounding: equal to the minimum over all
+    //! triangles (ties between triangles sharing π(p) may pick either).
+    ClosestPoint project(const Vec3& p) const;
+
+    //! Same result, but starts from triangle `hint` (e.g. the answer for a nearby point), which
+    //! bounds the search from the first node on. An out-of-range hint is ignored.
+    ClosestPoint project(const Vec3& p, uint32_t hint) const;
+
+    const TriangleMesh& mesh() const { return mesh_; }
+    const Bvh& bvh() const { return bvh_; }
+    //! Unit angle-weighted normal per vertex (zero for a vertex of degenerate triangles only).
+    const std::vector<Vec3>& vertex_normals() const { return vertex_normals_; }
+    //! Unit normal per triangle (zero for a zero-area triangle).
+    const std::vector<Vec3>& face_normals() const { return face_normals_; }
+
+private:
+    //! Triangle corners in the BVH's leaf order, next to the original index, so a leaf is one
+    //! contiguous block of memory.
+    struct PackedTriangle
+    {
+        Vec3 a, b, c;
+        uint32_t id;
+    };
+
+    void search(const Vec3& p, TrianglePoint& best, uint32_t& best_id) const;
+    ClosestPoint finish(const TrianglePoint& best, uint32_t id) const;
+
+    TriangleMesh mesh_;
+    std::vector<Vec3> vertex_normals_;
+    std::vector<Vec3> face_normals_;
+    Bvh bvh_;
+    std::vector<PackedTriangle> packed_;
+};
+
+} // namespace zomeify

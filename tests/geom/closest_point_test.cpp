@@ -1,0 +1,183 @@
+#include "core/geom/closest_point.h"
+
+#include <cmath>
+#include <random>
+#include <thread>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "tests/geom/geom_reference.h"
+#include "tests/support/geom_fixtures.h"
+
+namespace zomeify {
+namespace {
+
+// π(p) against the brute-force minimum, and the answer internally consistent.
+void check_against_brute_force(const SurfaceProjector& projector, const Vec3& p, double diagonal)
+{
+    const TriangleMesh& mesh = projector.mesh();
+    const ClosestPoint cp = projector.project(p);
+    const double expected = test::brute_force_distance_squared(mesh, p);
+    ASSERT_NEAR(cp.distance_squared, expected, 1e-12 * (diagonal * diagonal + expected)) << "p = " << p.transpose();
+    ASSERT_LT(cp.triangle, mesh.triangles.size());
+    const auto& t = mesh.triangles[cp.triangle];
+    const Vec3 q = cp.barycentric[0] * mesh.positions[t[0]] + cp.barycentric[1] * mesh.positions[t[1]] +
+                   cp.barycentric[2] * mesh.positions[t[2]];
+    EXPECT_LT((q - cp.point).norm(), 1e-12 * diagonal);
+    EXPECT_NEAR((p - cp.point).squaredNorm(), cp.distance_squared, 1e-12 * diagonal * diagonal);
+    EXPECT_NEAR(cp.normal.norm(), 1.0, 1e-12);
+}
+
+TEST(GeomProjection, MatchesBruteForceOnProceduralSurfaces)
+{
+    std::mt19937 rng(11);
+    for (const auto& [name, mesh] : test::procedural_surfaces())
+    {
+        SCOPED_TRACE(name);
+        const SurfaceProjector projector(mesh);
+        const double diagonal = test::bbox_diagonal(mesh);
+        for (int i = 0; i < 1500; ++i)
+        {
+            check_against_brute_force(projector, test::random_point_in_box(mesh, 0.3, rng), diagonal);
+            check_against_brute_force(projector, test::random_point_near_surface(mesh, 0.05 * diagonal, rng),
+                                      diagonal);
+        }
+        // Far away and exactly on vertices.
+        check_against_brute_force(projector, Vec3(1e3, -2e3, 5e2), diagonal);
+        for (size_t v = 0; v < mesh.positions.size(); v += 17)
+        {
+            const ClosestPoint cp = projector.project(mesh.positions[v]);
+            EXPECT_EQ(cp.distance_squared, 0.0);
+        }
+    }
+}
+
+TEST(GeomProjection, HintGivesTheSameDistance)
+{
+    const TriangleMesh mesh = test::make_torus(1.0, 0.3, 40, 20);
+    const SurfaceProjector projector(mesh);
+    std::mt19937 rng(12);
+    std::uniform_int_distribution<uint32_t> tri(0, static_cast<uint32_t>(mesh.triangles.size() - 1));
+    for (int i = 0; i < 2000; ++i)
+    {
+        const Vec3 p = test::random_point_in_box(mesh, 0.2, rng);
+        const ClosestPoint plain = projector.project(p);
+        const ClosestPoint hinted = projector.project(p, tri(rng));
+        EXPECT_EQ(plain.distance_squared, hinted.distance_squared);
+        EXPECT_EQ(projector.project(p, plain.triangle).triangle, plain.triangle);
+    }
+    EXPECT_EQ(projector.project(Vec3(3, 0, 0), 0xffffffffu).distance_squared,
+              projector.project(Vec3(3, 0, 0)).distance_squared);
+}
+
+TEST(GeomProjection, NormalsAreUnitAndOutwardOnAnalyticShapes)
+{
+    std::mt19937 rng(13);
+    const SurfaceProjector sphere(test::make_uv_sphere(2.0, 32, 64));
+    for (int i = 0; i < 3000; ++i)
+    {
+        const Vec3 p = test::random_point_in_box(sphere.mesh(), 0.5, rng);
+        const ClosestPoint cp = sphere.project(p);
+        EXPECT_NEAR(cp.normal.norm(), 1.0, 1e-12);
+        EXPECT_GT(cp.normal.dot(cp.point.normalized()), 0.995);
+    }
+    const double major = 1.0;
+    const SurfaceProjector torus(test::make_torus(major, 0.3, 96, 48));
+    for (int i = 0; i < 3000; ++i)
+    {
+        const Vec3 p = test::random_point_in_box(torus.mesh(), 0.3, rng);
+        const ClosestPoint cp = torus.project(p);
+        const Vec3 ring = major * Vec3(cp.point.x(), 0, cp.point.z()).normalized();
+        const Vec3 exact = (cp.point - ring).normalized();
+        EXPECT_NEAR(cp.normal.norm(), 1.0, 1e-12);
+        EXPECT_GT(cp.normal.dot(exact), 0.99);
+    }
+}
+
+TEST(GeomProjection, NormalsPointOutwardOnTheCube)
+{
+    // Sharp edges and corners: the interpolated normal still leans outward of the closest face.
+    const SurfaceProjector cube(test::make_cube(1.0, 3));
+    std::mt19937 rng(14);
+    for (int i = 0; i < 3000; ++i)
+    {
+        const ClosestPoint cp = cube.project(test::random_point_in_box(cube.mesh(), 0.5, rng));
+        EXPECT_GT(cp.normal.dot(cube.face_normals()[cp.triangle]), 0.5);
+    }
+    const ClosestPoint corner = cube.project(Vec3(2, 2, 2));
+    EXPECT_NEAR(corner.normal.dot(Vec3(1, 1, 1).normalized()), 1.0, 1e-12);
+}
+
+TEST(GeomProjection, RejectsInvalidMeshes)
+{
+    EXPECT_ANY_THROW(SurfaceProjector(TriangleMesh{}));
+    TriangleMesh bad_index = test::make_icosphere(1.0, 0);
+    bad_index.triangles[3][1] = 99;
+    EXPECT_ANY_THROW(SurfaceProjector{bad_index});
+    TriangleMesh nan = test::make_icosphere(1.0, 0);
+    nan.positions[2].y() = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_ANY_THROW(SurfaceProjector{nan});
+}
+
+TEST(GeomProjection, DegenerateTrianglesInTheMesh)
+{
+    // A zero-area triangle glued into the soup must not break queries or normals.
+    TriangleMesh mesh = test::make_icosphere(1.0, 1);
+    const auto n = static_cast<uint32_t>(mesh.positions.size());
+    mesh.positions.push_back(Vec3(0.2, 0.2, 0.2));
+    mesh.positions.push_back(Vec3(0.4, 0.4, 0.4));
+    mesh.positions.push_back(Vec3(0.6, 0.6, 0.6));
+    mesh.triangles.push_back({n, n + 1, n + 2});
+    const SurfaceProjector projector(mesh);
+    std::mt19937 rng(15);
+    const double diagonal = test::bbox_diagonal(mesh);
+    for (int i = 0; i < 1000; ++i)
+    {
+        check_against_brute_force(projector, test::random_point_in_box(mesh, 0.2, rng), diagonal);
+    }
+}
+
+TEST(GeomProjection, ConcurrentQueriesGiveTheSameAnswers)
+{
+    const TriangleMesh mesh = test::make_torus(1.0, 0.25, 64, 32);
+    const SurfaceProjector projector(mesh);
+    std::mt19937 rng(16);
+    std::vector<Vec3> points;
+    for (int i = 0; i < 4000; ++i)
+    {
+        points.push_back(test::random_point_near_surface(mesh, 0.1, rng));
+    }
+    std::vector<ClosestPoint> expected;
+    for (const Vec3& p : points)
+    {
+        expected.push_back(projector.project(p));
+    }
+    std::vector<int> mismatches(4, 0);
+    std::vector<std::thread> threads;
+    for (int t = 0; t < 4; ++t)
+    {
+        threads.emplace_back([&, t] {
+            for (size_t i = 0; i < points.size(); ++i)
+            {
+                const size_t k = (i * 7 + static_cast<size_t>(t) * 1000) % points.size();
+                const ClosestPoint cp = projector.project(points[k]);
+                mismatches[t] += cp.distance_squared == expected[k].distance_squared &&
+                                         cp.triangle == expected[k].triangle && cp.normal == expected[k].normal
+                                     ? 0
+                                     : 1;
+            }
+        });
+    }
+    for (std::thread& th : threads)
+    {
+        th.join();
+    }
+    for (int t = 0; t < 4; ++t)
+    {
+        EXPECT_EQ(mismatches[t], 0);
+    }
+}
+
+} // namespace
+} // namespace zomeify
