@@ -3,11 +3,12 @@ if(ZOME_WASM_THREADS)
   add_compile_options(-pthread)
   add_link_options(-pthread -sPTHREAD_POOL_SIZE=8)
 endif()
-# Exceptions carry parse errors to the caller; native wasm exceptions keep the hot paths free of
-# JS invoke wrappers (JS-emulated exceptions would wrap every call that may throw).
-add_compile_options(-fwasm-exceptions)
-add_link_options(-fwasm-exceptions -sUSE_ZLIB=1)
-add_compile_options(-sUSE_ZLIB=1)
+# Exceptions carry parse errors to the caller. Debian's frozen cache has libc++abi built for
+# JS-emulated exceptions only (no *-wasmexcept variant): with -fwasm-exceptions, catch clauses
+# fail to match types. So -fexceptions; hot loops must avoid throwing calls (noexcept) to stay
+# free of JS invoke wrappers.
+add_compile_options(-fexceptions)
+add_link_options(-fexceptions)
 
 # emcmake injects "node --experimental-wasm-threads", which node 20 rejects; 3.1.6 also needs
 # --no-experimental-fetch under node 20 (toolchain.md).

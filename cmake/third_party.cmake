@@ -6,7 +6,3 @@ find_path(NLOHMANN_INC nlohmann/json.hpp PATHS /usr/include NO_CMAKE_FIND_ROOT_P
 set(ZOME_TP_INC ${CMAKE_BINARY_DIR}/tp_inc)
 file(COPY ${TINYGLTF_INC}/tiny_gltf.h DESTINATION ${ZOME_TP_INC})
 file(COPY ${NLOHMANN_INC}/nlohmann DESTINATION ${ZOME_TP_INC})
-# zlib: native from Debian, wasm from Emscripten's port (-sUSE_ZLIB=1, already in the frozen cache).
-if(NOT EMSCRIPTEN)
-  find_package(ZLIB REQUIRED)
-endif()

@@ -23,12 +23,11 @@ const std::vector<Command>& commands()
 
 namespace {
 
-int usage(std::ostream& os)
+void usage(std::ostream& os)
 {
     os << "usage: zomeify COMMAND ...\n";
     for (const auto& c : zomeify::cli::commands())
         os << "  zomeify " << c.usage << "\n";
-    return 2;
 }
 
 } // namespace
@@ -36,7 +35,10 @@ int usage(std::ostream& os)
 int main(int argc, char** argv)
 {
     if (argc < 2)
-        return usage(std::cerr);
+    {
+        std::cerr << "zomeify: missing command (try zomeify --help)\n";
+        return 2;
+    }
     if (!std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))
     {
         usage(std::cout);
@@ -61,6 +63,6 @@ int main(int argc, char** argv)
         }
         return 1;
     }
-    std::cerr << "zomeify: unknown command '" << argv[1] << "'\n";
-    return usage(std::cerr);
+    std::cerr << "zomeify: unknown command '" << argv[1] << "' (try zomeify --help)\n";
+    return 2;
 }

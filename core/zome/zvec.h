@@ -20,7 +20,8 @@ struct ZVec
 
     friend bool operator==(const ZVec&, const ZVec&) = default;
     //! Lexicographic order of the six integers (a total order for containers, not geometric).
-    friend auto operator<=>(const ZVec&, const ZVec&) = default;
+    //! Written out because libc++ 14 (Emscripten 3.1.6) has no operator<=> for std::array.
+    friend bool operator<(const ZVec& a, const ZVec& b) { return a.c < b.c; }
 
     //! Twice component k (0 = x, 1 = y, 2 = z) as an exact number.
     QPhi twice(int k) const { return {c[2 * k + 1], c[2 * k]}; }

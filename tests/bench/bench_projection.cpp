@@ -1,0 +1,184 @@
+// π(p) on the shared meshes: BVH build time, closest-point queries per second per thread for
+// points within 2 voxel sizes of the surface (voxel = longest bounding-box side / 24), on 1 and
+// 2 threads, cache hits per second, and peak memory. Prints one JSON object.
+// Usage: bench_projection [mesh.obj ...]   (names relative to the shared meshes folder)
+#include <iostream>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <Eigen/Geometry>
+#include <nlohmann/json.hpp>
+
+#include "core/geom/closest_point.h"
+#include "core/geom/projection_cache.h"
+#include "core/surface/prepare.h"
+#include "tests/bench/bench_util.h"
+
+using namespace zomeify;
+
+namespace {
+
+constexpr int kRuns = 7;
+constexpr size_t kQueries = 200000;
+
+// Uniform in a ball of radius `radius` around an area-weighted random point of the surface.
+std::vector<Vec3> near_surface_points(const TriangleMesh& mesh, double radius, size_t count)
+{
+    std::vector<double> areas;
+    for (const auto& t : mesh.triangles)
+    {
+        const Vec3& a = mesh.positions[t[0]];
+        areas.push_back((mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a).norm());
+    }
+    std::mt19937 rng(5);
+    std::discrete_distribution<size_t> pick(areas.begin(), areas.end());
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    std::vector<Vec3> out;
+    out.reserve(count);
+    for (size_t i = 0; i < count; ++i)
+    {
+        const auto& t = mesh.triangles[pick(rng)];
+        double s = u(rng);
+        double r = u(rng);
+        if (s + r > 1.0)
+        {
+            s = 1.0 - s;
+            r = 1.0 - r;
+        }
+        const Vec3& a = mesh.positions[t[0]];
+        const Vec3 on = a + s * (mesh.positions[t[1]] - a) + r * (mesh.positions[t[2]] - a);
+        const Vec3 dir = Vec3(normal(rng), normal(rng), normal(rng)).normalized();
+        out.push_back(on + radius * std::cbrt(u(rng)) * dir);
+    }
+    return out;
+}
+
+// Median over kRuns of the queries per second of each of `threads` threads, all running `work`
+// over the whole point set at once.
+template <typename Work>
+double per_thread_rate(int threads, size_t count, const Work& work)
+{
+    const double seconds = bench::median_seconds(kRuns, [&] {
+        std::vector<std::thread> pool;
+        for (int t = 0; t < threads; ++t)
+        {
+            pool.emplace_back([&, t] { work(t); });
+        }
+        for (std::thread& th : pool)
+        {
+            th.join();
+        }
+    });
+    return static_cast<double>(count) / seconds;
+}
+
+nlohmann::json bench_mesh(const std::string& name)
+{
+    Stopwatch load_clock;
+    TriangleMesh mesh = load_surface(std::string(ZOME_SHARED_DIR) + "/data/meshes/" + name);
+    const double load_s = load_clock.seconds();
+
+    Box3 box;
+    for (const Vec3& p : mesh.positions)
+    {
+        box.extend(p);
+    }
+    const double voxel = box.extent().maxCoeff() / 24.0;
+
+    const std::vector<Box3> boxes = triangle_boxes(mesh);
+    size_t nodes = 0;
+    int depth = 0;
+    const double bvh_s = bench::median_seconds(kRuns, [&] {
+        const Bvh bvh(boxes);
+        nodes = bvh.nodes().size();
+        depth = bvh.depth();
+    });
+    const double projector_s = bench::median_seconds(kRuns, [&] { const SurfaceProjector p(mesh); });
+    const SurfaceProjector projector(mesh);
+
+    const std::vector<Vec3> points = near_surface_points(mesh, 2.0 * voxel, kQueries);
+    std::vector<double> sums(2, 0.0);
+    auto project_all = [&](int t) {
+        double sum = 0.0;
+        for (const Vec3& p : points)
+        {
+            sum += projector.project(p).distance_squared;
+        }
+        sums[t] = sum;
+    };
+    const double rate1 = per_thread_rate(1, points.size(), project_all);
+    const double rate2 = per_thread_rate(2, points.size(), project_all);
+
+    // Repeated exact positions: every query a cache hit after one warm-up pass.
+    ProjectionCache cache(projector, {size_t{1} << 19, 64});
+    for (size_t i = 0; i < points.size(); ++i)
+    {
+        cache.project(i, points[i]);
+    }
+    auto cached_all = [&](int t) {
+        double sum = 0.0;
+        for (size_t i = 0; i < points.size(); ++i)
+        {
+            sum += cache.project(i, points[i]).distance_squared;
+        }
+        sums[t] = sum;
+    };
+    const double cached1 = per_thread_rate(1, points.size(), cached_all);
+    const double cached2 = per_thread_rate(2, points.size(), cached_all);
+
+    const size_t projector_bytes = projector.bvh().nodes().size() * sizeof(BvhNode) +
+                                   mesh.triangles.size() * (3 * sizeof(Vec3) + 8 + sizeof(Vec3)) +
+                                   mesh.positions.size() * 2 * sizeof(Vec3);
+    return {
+        {"mesh", name},
+        {"triangles", mesh.triangles.size()},
+        {"load_ms", load_s * 1e3},
+        {"bvh_build_ms_median", bvh_s * 1e3},
+        {"projector_build_ms_median", projector_s * 1e3},
+        {"bvh_nodes", nodes},
+        {"bvh_depth", depth},
+        {"projector_bytes", projector_bytes},
+        {"voxel_size", voxel},
+        {"query_radius", 2.0 * voxel},
+        {"queries", points.size()},
+        {"queries_per_s_1_thread", rate1},
+        {"queries_per_s_per_thread_2_threads", rate2},
+        {"queries_per_s_total_2_threads", 2.0 * rate2},
+        {"cache_hits_per_s_1_thread", cached1},
+        {"cache_hits_per_s_per_thread_2_threads", cached2},
+        {"checksum", sums[0]},
+    };
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    std::vector<std::string> names;
+    for (int i = 1; i < argc; ++i)
+    {
+        names.emplace_back(argv[i]);
+    }
+    if (names.empty())
+    {
+        names = {"rockerarm.obj", "fertility.obj"};
+    }
+    nlohmann::json meshes = nlohmann::json::array();
+    for (const std::string& name : names)
+    {
+        meshes.push_back(bench_mesh(name));
+    }
+    const nlohmann::json out = {
+        {"bench", "projection"},
+        {"platform", bench::platform()},
+        {"runs", kRuns},
+        {"hardware_threads", std::thread::hardware_concurrency()},
+        {"meshes", meshes},
+        {"peak_memory_mib", bench::peak_memory_mib()},
+    };
+    std::cout << out.dump() << std::endl;
+    return 0;
+}

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# CLI contract tests (design.md §5): outputs, exit status, one-line errors on bad input.
+# Usage: cli_test.sh SHARED_DIR ZOMEIFY_COMMAND... (e.g. "node --no-experimental-fetch zomeify.js")
+set -u
+shared=$1; shift
+cli=("$@")
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+pass=0; fail=0
+ok()  { pass=$((pass + 1)); }
+bad() { fail=$((fail + 1)); echo "FAIL: $*"; }
+
+# expect_output NAME PATTERN ARGS...: exit 0 and stdout matches the extended regex.
+expect_output() {
+  local name=$1 pattern=$2; shift 2
+  local out; out=$("${cli[@]}" "$@" 2>"$tmp/err"); local rc=$?
+  if [ $rc -ne 0 ]; then bad "$name: exit $rc: $(cat "$tmp/err")"; return; fi
+  if grep -Eq -- "$pattern" <<<"$out"; then ok; else bad "$name: output lacks /$pattern/"; fi
+}
+# expect_error NAME PATTERN ARGS...: non-zero exit, nothing on stdout, one stderr line matching.
+expect_error() {
+  local name=$1 pattern=$2; shift 2
+  "${cli[@]}" "$@" >"$tmp/out" 2>"$tmp/err"; local rc=$?
+  local lines; lines=$(grep -c . "$tmp/err")
+  if [ $rc -eq 0 ]; then bad "$name: exit 0"; return; fi
+  if [ "$lines" -ne 1 ]; then bad "$name: $lines stderr lines: $(head -c 300 "$tmp/err")"; return; fi
+  if grep -Eq -- "$pattern" "$tmp/err"; then ok; else bad "$name: stderr '$(cat "$tmp/err")' lacks /$pattern/"; fi
+}
+
+bunny="$shared/data/vef/bunny.vef"
+expect_output "parts json balls"  '"balls": 392'  parts "$bunny" --json
+for kv in B0:179 B1:158 B2:5 Y0:255 Y1:119 Y2:18 R0:149 R1:78 R2:7; do
+  expect_output "parts json ${kv%%:*}" "\"${kv%%:*}\": ${kv##*:},?\$" parts "$bunny" --json
+done
+expect_output "parts table"       'PST-Y1-YEL +Y1 +yellow +64\.83 +119' parts "$bunny"
+expect_output "parts table total" 'total: 392 balls, 968 struts' parts "$bunny"
+expect_output "parts csv"         '^PST-R2-RED,R2,red,115\.20,7$' parts "$bunny" --csv
+expect_output "convert"           'wrote .*bunny\.zome\.json' convert "$bunny" -o "$tmp/bunny.zome.json" -o "$tmp/bunny.vef"
+expect_output "parts of converted json" '"R1": 78,' parts "$tmp/bunny.zome.json" --json
+expect_output "parts of converted vef"  '"Y2": 18,?$' parts "$tmp/bunny.vef" --json
+expect_output "help" 'zomeify parts MODEL' --help
+
+printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/nonzome.vef"
+head -c 700 "$bunny" > "$tmp/truncated.vef"
+printf 'vZome VEF 6 field golden 999999999999 (0,0)' > "$tmp/absurd.vef"
+printf '{"format":"zomeify-model","version":1,"nodes":[[0,0,0,0,0,0]],"struts":[[0,3]]}' > "$tmp/index.zome.json"
+head -c 100 "$tmp/bunny.zome.json" > "$tmp/truncated.zome.json"
+: > "$tmp/empty.vef"
+expect_error "no args"        'missing command'       
+expect_error "unknown cmd"    'unknown command'       frobnicate
+expect_error "missing file"   'cannot open'           parts "$tmp/missing.vef"
+expect_error "unknown option" 'unknown option --xml'  parts "$bunny" --xml
+expect_error "both formats"   'one of --json and --csv' parts "$bunny" --json --csv
+expect_error "non-zome strut" 'not a Zome strut'      parts "$tmp/nonzome.vef"
+expect_error "truncated vef"  'truncated|ends early'  parts "$tmp/truncated.vef"
+expect_error "absurd count"   'count 999999999999'    parts "$tmp/absurd.vef"
+expect_error "bad index"      'does not exist'        parts "$tmp/index.zome.json"
+expect_error "truncated json" 'syntax error'          parts "$tmp/truncated.zome.json"
+expect_error "empty"          'empty'                 parts "$tmp/empty.vef"
+expect_error "unknown format" 'unknown model format'  parts "$shared/data/meshes/cube.obj"
+expect_error "convert no -o"  'missing -o'            convert "$bunny"
+
+echo "cli: $pass passed, $fail failed"
+[ $fail -eq 0 ]
