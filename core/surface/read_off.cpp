@@ -75,6 +75,8 @@ PolygonSoup read_off(std::span<const uint8_t> bytes)
         throw InvalidInputError(at_line(count_line) + "header says " + std::to_string(nv) + " vertices and " +
                                 std::to_string(nf) + " faces, but only " + std::to_string(available) +
                                 " lines follow");
+    if (nv == 0)
+        throw InvalidInputError(at_line(count_line) + "no vertices");
     PolygonSoup soup;
     soup.positions.reserve(static_cast<size_t>(nv));
     soup.polygons.reserve(static_cast<size_t>(nf));

@@ -110,7 +110,9 @@ std::string quoted(std::string_view token)
     // Built with append: GCC 12 warns falsely (-Wrestrict) on "'" + std::string(...).
     constexpr size_t max_shown = 24;
     std::string s(1, '\'');
-    s.append(token.substr(0, max_shown));
+    // Bytes outside printable ASCII would garble a one-line terminal message.
+    for (const char c : token.substr(0, max_shown))
+        s.push_back(c >= 0x20 && c < 0x7F ? c : '?');
     if (token.size() > max_shown)
         s.append("...");
     s.push_back('\'');

@@ -55,7 +55,7 @@ bool parse_int(std::string_view token, long long& value);
 //! "line 12: " style prefix for messages.
 std::string at_line(size_t line_number);
 
-//! The token quoted and shortened for a message.
+//! The token quoted and shortened for a message, with non-printable bytes shown as '?'.
 std::string quoted(std::string_view token);
 
 } // namespace zomeify::detail
