@@ -180,6 +180,12 @@ Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b)
     return h;
 }
 
+Face SurfaceMesh::new_face()
+{
+    fprops_.push_back();
+    return Face(static_cast<MeshIndex>(faces_size() - 1));
+}
+
 namespace {
 
 // Walks clockwise around the vertex that inner_next leaves, starting behind inner_next's fan,
@@ -289,8 +295,7 @@ Face SurfaceMesh::try_add_face(std::span<const Vertex> vertices)
         if (is_new[i])
             hs[i] = new_edge(vertices[i], vertices[(i + 1) % n]);
 
-    fprops_.push_back();
-    const Face f(static_cast<MeshIndex>(faces_size() - 1));
+    const Face f = new_face();
     fhalf_[f] = hs[n - 1];
 
     // The new next-links are collected first and applied afterwards, so that every corner reads
@@ -498,8 +503,7 @@ Halfedge SurfaceMesh::split_face(Face f, Vertex a, Vertex b)
     const Halfedge b_out = next(hb_in);
     const Halfedge x = new_edge(a, b);
     const Halfedge y = opposite(x);
-    fprops_.push_back();
-    const Face g(static_cast<MeshIndex>(faces_size() - 1));
+    const Face g = new_face();
     set_next(ha_in, x);
     set_next(x, b_out);
     set_next(hb_in, y);
@@ -582,8 +586,7 @@ void SurfaceMesh::build_faces(const std::vector<std::vector<MeshIndex>>& faces)
                 if (poly[j] == poly[i])
                     throw TopologyError(where + " visits vertex " + std::to_string(poly[i]) + " twice");
         }
-        fprops_.push_back();
-        const Face f(static_cast<MeshIndex>(fi));
+        const Face f = new_face();
         const size_t n = poly.size();
         HalfedgeBuffer hs;
         for (size_t i = 0; i < n; ++i)

@@ -282,6 +282,8 @@ protected:
 
     //! Appends an edge from a to b (no faces, next/prev unset).
     Halfedge new_edge(Vertex a, Vertex b);
+    //! Appends a face with no halfedge (the caller links it).
+    Face new_face();
 
 private:
     template <class P>

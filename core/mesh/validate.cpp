@@ -411,6 +411,13 @@ void check_zome(const ZomeMesh& m, Validator& val)
             h = m.ccw_rotated(h);
         } while (h != start && ++guard < m.halfedges_size());
     }
+    for (const auto& [p, v] : m.position_index())
+        if (!m.is_valid(v) || m.position(v) != p)
+        {
+            std::ostringstream os;
+            os << "the position index maps " << p << " to " << v << ", which is not there";
+            val.report(MeshProblem::PositionIndex, os.str());
+        }
     if (m.position_index_size() != m.n_vertices())
         val.report(MeshProblem::PositionIndex, "the position index has " + std::to_string(m.position_index_size())
                                                    + " entries for " + std::to_string(m.n_vertices()) + " nodes");

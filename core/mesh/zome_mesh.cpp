@@ -44,7 +44,7 @@ void ZomeMesh::bind_properties()
     zvec_ = get_halfedge_property<uint8_t>("h:zvector");
 }
 
-Vertex ZomeMesh::add_vertex(const ZVec& p)
+Vertex ZomeMesh::add_vertex(ZVec p)
 {
     if (!is_position_free(p))
         throw TopologyError("add_vertex: a node already sits at " + describe(p));
@@ -54,7 +54,7 @@ Vertex ZomeMesh::add_vertex(const ZVec& p)
     return v;
 }
 
-Vertex ZomeMesh::add_vertex_unchecked(const ZVec& p)
+Vertex ZomeMesh::add_vertex_unchecked(ZVec p)
 {
     const Vertex v = SurfaceMesh::add_vertex();
     zpos_[v] = p;
@@ -62,7 +62,7 @@ Vertex ZomeMesh::add_vertex_unchecked(const ZVec& p)
     return v;
 }
 
-void ZomeMesh::move_vertex(Vertex v, const ZVec& p)
+void ZomeMesh::move_vertex(Vertex v, ZVec p)
 {
     if (zpos_[v] == p)
         return;

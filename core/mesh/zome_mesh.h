@@ -37,8 +37,9 @@ public:
 
     //! \name Positions
     //!@{
-    //! Adds an isolated node at p; throws TopologyError if a node already sits at p.
-    Vertex add_vertex(const ZVec& p);
+    //! Adds an isolated node at p; throws TopologyError if a node already sits at p. (p is taken
+    //! by value: it may be another node's position, and appending can move the position array.)
+    Vertex add_vertex(ZVec p);
     //! The node at p, or invalid (exact lookup, O(1)).
     Vertex find_vertex(const ZVec& p) const
     {
@@ -51,9 +52,11 @@ public:
     const VertexProperty<ZVec>& positions() const { return zpos_; }
     //! Moves v to the free position p, keeping the index in sync, and recomputes the vector ids
     //! of v's edges. Throws TopologyError if p is occupied by another node.
-    void move_vertex(Vertex v, const ZVec& p);
+    void move_vertex(Vertex v, ZVec p);
     //! Number of entries in the position index (equals n_vertices() when consistent).
     size_t position_index_size() const { return index_.size(); }
+    //! The position index itself (for validation and statistics).
+    const std::unordered_map<ZVec, Vertex, ZVecHash>& position_index() const { return index_; }
     //!@}
 
     //! \name Struts
@@ -79,11 +82,11 @@ public:
     //! \name Low-level setters (break invariants; for validator tests and repair code)
     //!@{
     //! Sets a position without touching the index.
-    void set_position_unchecked(Vertex v, const ZVec& p) { zpos_[v] = p; }
+    void set_position_unchecked(Vertex v, ZVec p) { zpos_[v] = p; }
     //! Overwrites the stored vector id of one halfedge.
     void set_vector_id_unchecked(Halfedge h, uint8_t id) { zvec_[h] = id; }
     //! Adds a node at p even if p is occupied (the index keeps the older node).
-    Vertex add_vertex_unchecked(const ZVec& p);
+    Vertex add_vertex_unchecked(ZVec p);
     //!@}
 
 protected:
