@@ -1,0 +1,156 @@
+// `zomeify inspect` (design.md §5): the report's text forms, and the CLI itself on the shared
+// meshes (issue 3 acceptance: `inspect --json` gives the README's V, F, closedness and genus).
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "core/surface/prepare.h"
+#include "core/surface/report_text.h"
+#include "tests/support/paths.h"
+#include "tests/surface/surface_fixtures.h"
+
+#ifndef __EMSCRIPTEN__
+#include <sys/wait.h>
+#endif
+
+namespace zomeify::surface_test {
+namespace {
+
+TEST(InspectReport, TableAndJsonOfARepairedCube)
+{
+    const SurfaceReport r = diagnose(reversed(cube_quads()));
+    const std::string table = surface_report_table(r, "cube.obj");
+    EXPECT_NE(table.find("vertices        8\n"), std::string::npos) << table;
+    EXPECT_NE(table.find("faces           12 triangles\n"), std::string::npos) << table;
+    EXPECT_NE(table.find("closed          yes\n"), std::string::npos) << table;
+    EXPECT_NE(table.find("genus           0\n"), std::string::npos) << table;
+    EXPECT_NE(table.find("repaired        triangulated 6 polygons\n"), std::string::npos) << table;
+    EXPECT_NE(table.find("                flipped 12 faces"), std::string::npos) << table;
+    EXPECT_NE(table.find("problems        none\n"), std::string::npos) << table;
+
+    const auto j = nlohmann::json::parse(surface_report_json(r, "cube.obj"));
+    EXPECT_EQ(j["file"], "cube.obj");
+    EXPECT_EQ(j["ok"], true);
+    EXPECT_EQ(j["vertices"], 8);
+    EXPECT_EQ(j["faces"], 12);
+    EXPECT_EQ(j["closed"], true);
+    EXPECT_EQ(j["genus"], 0);
+    EXPECT_EQ(j["repairs"]["flipped_faces"], 12);
+    EXPECT_EQ(j["repairs"]["triangulated_polygons"], 6);
+    EXPECT_EQ(j["bbox"]["max"][2], 1.0);
+    EXPECT_NEAR(j["bbox"]["diagonal"].get<double>(), std::sqrt(3.0), 1e-12);
+}
+
+TEST(InspectReport, ProblemsInTable)
+{
+    PolygonSoup box = cube_quads();
+    box.polygons.pop_back();
+    const std::string table = surface_report_table(diagnose(box), "box.obj");
+    EXPECT_NE(table.find("closed          no (1 holes, 4 boundary edges)"), std::string::npos) << table;
+    EXPECT_NE(table.find("problems        mesh is not closed"), std::string::npos) << table;
+}
+
+#ifndef __EMSCRIPTEN__
+
+struct CliResult
+{
+    int status = -1;
+    std::string out;
+    std::string err;
+};
+
+// Runs the real CLI binary; stderr goes through a scratch file.
+CliResult run_cli(const std::string& arguments)
+{
+    const std::string err_path = test::temp_path("inspect_stderr.txt");
+    const std::string command = std::string("'") + ZOME_CLI_PATH + "' " + arguments + " 2>'" + err_path + "'";
+    CliResult result;
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe)
+        return result;
+    char buffer[4096];
+    size_t n;
+    while ((n = fread(buffer, 1, sizeof buffer, pipe)) > 0)
+        result.out.append(buffer, n);
+    const int status = pclose(pipe);
+    result.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    std::ifstream err(err_path);
+    result.err.assign(std::istreambuf_iterator<char>(err), std::istreambuf_iterator<char>());
+    return result;
+}
+
+TEST(InspectCli, JsonMatchesReadmeForAllSharedMeshes)
+{
+    struct Expected
+    {
+        const char* file;
+        int genus, vertices, faces;
+    };
+    const Expected meshes[] = {
+        {"fertility.obj", 4, 4494, 9000}, {"rockerarm.obj", 1, 10044, 20088}, {"bunny.obj", 0, 3301, 6598},
+        {"elk.obj", 1, 5194, 10388},      {"torus.obj", 1, 2304, 4608},       {"sphere.obj", 0, 642, 1280},
+        {"cube.obj", 0, 26, 48},          {"eight.obj", 2, 766, 1536},        {"3holes.obj", 3, 3596, 7200},
+        {"scorpion.obj", 0, 6315, 12626},
+    };
+    for (const Expected& m : meshes)
+    {
+        SCOPED_TRACE(m.file);
+        const CliResult r = run_cli("inspect '" + test::shared_path(std::string("data/meshes/") + m.file) + "' --json");
+        ASSERT_EQ(r.status, 0) << r.err;
+        const auto j = nlohmann::json::parse(r.out);
+        EXPECT_EQ(j["vertices"], m.vertices);
+        EXPECT_EQ(j["faces"], m.faces);
+        EXPECT_EQ(j["closed"], true);
+        EXPECT_EQ(j["manifold"], true);
+        EXPECT_EQ(j["components"], 1);
+        EXPECT_EQ(j["genus"], m.genus);
+        EXPECT_TRUE(j["repaired"].empty());
+        EXPECT_TRUE(r.err.empty());
+    }
+}
+
+TEST(InspectCli, Table)
+{
+    const CliResult r = run_cli("inspect '" + test::shared_path("data/meshes/eight.obj") + "'");
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("genus           2\n"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("vertices        766\n"), std::string::npos) << r.out;
+}
+
+TEST(InspectCli, OpenMeshReportsAndFails)
+{
+    PolygonSoup box = cube_quads();
+    box.polygons.pop_back();
+    const std::string path = test::temp_path("open_box.obj");
+    std::ofstream(path) << to_obj(box);
+    const CliResult r = run_cli("inspect '" + path + "' --json");
+    EXPECT_EQ(r.status, 1);
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["ok"], false);
+    EXPECT_EQ(j["holes"], 1);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("open_box.obj: mesh is not closed: 1 hole (4 boundary edges"), std::string::npos) << r.err;
+}
+
+TEST(InspectCli, UnreadableFileIsOneLineError)
+{
+    const std::string path = test::temp_path("garbage.stl");
+    std::ofstream(path, std::ios::binary) << std::string("\x89PNG\r\n\x1a\n and more bytes that are not a mesh at all", 50);
+    for (const std::string& args : {"inspect '" + path + "'", "inspect '" + test::temp_path("missing.ply") + "'",
+                                    std::string("inspect"), "inspect '" + path + "' --xml"})
+    {
+        SCOPED_TRACE(args);
+        const CliResult r = run_cli(args);
+        EXPECT_EQ(r.status, 1);
+        EXPECT_TRUE(r.out.empty()) << r.out;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+        EXPECT_EQ(r.err.rfind("zomeify: ", 0), 0u) << r.err;
+    }
+}
+
+#endif
+
+} // namespace
+} // namespace zomeify::surface_test
