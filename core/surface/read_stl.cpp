@@ -65,9 +65,13 @@ PolygonSoup read_ascii(std::span<const uint8_t> bytes)
     while (lines.next(line))
     {
         TokenSplitter tokens(line);
-        std::string_view keyword;
-        if (!tokens.next(keyword))
+        std::string_view token;
+        if (!tokens.next(token))
             continue;
+        // Some exporters write the keywords in capitals.
+        std::string keyword(token);
+        for (char& c : keyword)
+            c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
         const size_t n = lines.line_number();
         if (keyword == "outer")
         {
@@ -90,7 +94,6 @@ PolygonSoup read_ascii(std::span<const uint8_t> bytes)
             Vec3 v;
             for (int a = 0; a < 3; ++a)
             {
-                std::string_view token;
                 double x = 0;
                 if (!tokens.next(token) || !parse_double(token, x))
                     throw InvalidInputError(at_line(n) + "vertex needs 3 numbers");

@@ -1,12 +1,14 @@
 // Each reader on small valid files written by the test code: exact counts and coordinates, and
 // the cube in every format comes out as the same closed mesh.
 #include <fstream>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
 #include "core/base/errors.h"
 #include "core/surface/prepare.h"
 #include "core/surface/read_mesh.h"
+#include "core/surface/tiny_gltf_config.h"
 #include "tests/support/paths.h"
 #include "tests/surface/surface_fixtures.h"
 
@@ -196,6 +198,107 @@ TEST(SurfaceReaders, GltfExternalBuffer)
     std::ofstream(path, std::ios::binary) << gltf;
     std::ofstream(temp_path("cube.bin"), std::ios::binary) << bin;
     expect_closed_cube(read_mesh_file(path));
+}
+
+TEST(SurfaceReaders, StlAsciiUpperCaseKeywords)
+{
+    std::string stl = to_stl_ascii(cube_quads());
+    for (const char* word : {"solid", "facet", "normal", "outer", "loop", "vertex", "endloop", "endfacet", "endsolid"})
+        for (size_t at = stl.find(word); at != std::string::npos; at = stl.find(word, at + 1))
+            for (size_t k = 0; k < std::string(word).size(); ++k)
+                stl[at + k] = static_cast<char>(stl[at + k] - 'a' + 'A');
+    expect_closed_cube(read(stl, "CUBE.STL"));
+}
+
+// A tetrahedron as one triangle strip (ubyte indices), and again as a fan (ushort indices) plus a
+// separate triangle, instanced through a node hierarchy with translations and a scale.
+TEST(SurfaceReaders, GltfStripsFansAndNodeHierarchy)
+{
+    tinygltf::Model model;
+    std::string data;
+    const float corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    data.append(reinterpret_cast<const char*>(corners), sizeof corners); // little-endian host
+    const uint8_t strip[8] = {0, 1, 2, 3, 0, 1, 0, 0};                    // 6 used, padded to 4 bytes
+    data.append(reinterpret_cast<const char*>(strip), sizeof strip);
+    const uint16_t fan[6] = {0, 1, 2, 3, 1, 0}; // 5 used
+    data.append(reinterpret_cast<const char*>(fan), sizeof fan);
+    const uint16_t base[4] = {1, 3, 2, 0}; // 3 used
+    data.append(reinterpret_cast<const char*>(base), sizeof base);
+    tinygltf::Buffer buffer;
+    buffer.data.assign(data.begin(), data.end());
+    model.buffers.push_back(buffer);
+    const auto view = [&](size_t offset, size_t length)
+    {
+        tinygltf::BufferView v;
+        v.buffer = 0;
+        v.byteOffset = offset;
+        v.byteLength = length;
+        model.bufferViews.push_back(v);
+        return static_cast<int>(model.bufferViews.size() - 1);
+    };
+    const auto accessor = [&](int view_index, int component, size_t count, int type)
+    {
+        tinygltf::Accessor a;
+        a.bufferView = view_index;
+        a.componentType = component;
+        a.count = count;
+        a.type = type;
+        if (type == TINYGLTF_TYPE_VEC3)
+        {
+            a.minValues = {0, 0, 0};
+            a.maxValues = {1, 1, 1};
+        }
+        model.accessors.push_back(a);
+        return static_cast<int>(model.accessors.size() - 1);
+    };
+    const int positions = accessor(view(0, 48), TINYGLTF_COMPONENT_TYPE_FLOAT, 4, TINYGLTF_TYPE_VEC3);
+    const int strip_indices = accessor(view(48, 8), TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, 6, TINYGLTF_TYPE_SCALAR);
+    const int fan_indices = accessor(view(56, 12), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 5, TINYGLTF_TYPE_SCALAR);
+    const int base_indices = accessor(view(68, 8), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 3, TINYGLTF_TYPE_SCALAR);
+    const auto primitive = [&](int indices, int mode)
+    {
+        tinygltf::Primitive p;
+        p.attributes["POSITION"] = positions;
+        p.indices = indices;
+        p.mode = mode;
+        return p;
+    };
+    tinygltf::Mesh strip_mesh, fan_mesh;
+    strip_mesh.primitives = {primitive(strip_indices, TINYGLTF_MODE_TRIANGLE_STRIP)};
+    fan_mesh.primitives = {primitive(fan_indices, TINYGLTF_MODE_TRIANGLE_FAN),
+                           primitive(base_indices, TINYGLTF_MODE_TRIANGLES), primitive(base_indices, TINYGLTF_MODE_LINE)};
+    model.meshes = {strip_mesh, fan_mesh};
+    tinygltf::Node root, strip_node, fan_node, unused;
+    root.translation = {10, 0, 0};
+    root.children = {1, 2};
+    strip_node.mesh = 0;
+    fan_node.mesh = 1;
+    fan_node.translation = {5, 0, 0};
+    fan_node.scale = {2, 2, 2};
+    unused.mesh = 0; // not in the scene: ignored
+    model.nodes = {root, strip_node, fan_node, unused};
+    tinygltf::Scene scene;
+    scene.nodes = {0};
+    model.scenes = {scene};
+    model.defaultScene = 0;
+    model.asset.version = "2.0";
+    std::ostringstream os;
+    tinygltf::TinyGLTF writer;
+    writer.WriteGltfSceneToStream(&model, os, false, true);
+
+    const PolygonSoup soup = read(os.str(), "tetra.glb");
+    EXPECT_EQ(soup.positions.size(), 12u); // 4 per triangle primitive instance
+    EXPECT_EQ(soup.polygons.size(), 8u);   // strip 4, fan 3, base 1; the line primitive is skipped
+    const PreparedSurface p = prepare_surface(soup);
+    EXPECT_EQ(p.report.vertices, 8u);
+    EXPECT_EQ(p.report.welded_vertices, 3u);
+    EXPECT_EQ(p.report.unreferenced_vertices, 1u); // vertex 0 of the base primitive's copy
+    EXPECT_EQ(p.report.components, 2u);
+    EXPECT_TRUE(p.report.closed);
+    EXPECT_DOUBLE_EQ(p.report.bbox_min[0], 10.0);
+    EXPECT_DOUBLE_EQ(p.report.bbox_max[0], 17.0);
+    EXPECT_DOUBLE_EQ(p.report.bbox_max[2], 2.0);
+    EXPECT_NEAR(signed_volume(p.mesh), 1.0 / 6 + 8.0 / 6, 1e-12);
 }
 
 TEST(SurfaceReaders, FileNotFound)
