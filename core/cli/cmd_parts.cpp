@@ -1,27 +1,29 @@
-// zomeify parts MODEL [--json | --csv]: the parts list of a .zome.json or .vef model.
+// zomeify parts MODEL [--json | --csv] [--have KITS]: the parts list of a .zome.json or .vef
+// model, with the kit plan (and, with --have, the loose parts missing from the kits you own).
 #include <iostream>
 
 #include "core/base/errors.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
 #include "core/io/model_io.h"
-#include "core/parts/parts_list.h"
+#include "core/parts/parts_report.h"
 
 namespace zomeify::cli {
 
 int cmd_parts(const CommandArgs& argv)
 {
-    const Args args(argv, {}, {"--json", "--csv"});
-    args.expect_positional(1, "one model file: zomeify parts MODEL [--json | --csv]");
+    const Args args(argv, {"--have"}, {"--json", "--csv"});
+    args.expect_positional(1, "one model file: zomeify parts MODEL [--json | --csv] [--have KITS]");
     if (args.has("--json") && args.has("--csv"))
         throw InvalidInputError("choose one of --json and --csv");
+    const OwnedKits owned = parse_owned_kits(args.value("--have").value_or(""));
     const PartsList parts = parts_list(read_model_file(args.positional()[0]));
     if (args.has("--json"))
-        std::cout << parts_json(parts);
+        std::cout << parts_report_json(parts, owned);
     else if (args.has("--csv"))
         std::cout << parts_csv(parts);
     else
-        std::cout << parts_table(parts);
+        std::cout << parts_report_text(parts, owned);
     return 0;
 }
 

@@ -13,6 +13,7 @@ using CommandArgs = std::vector<std::string>;
 int cmd_inspect(const CommandArgs& args); // cmd_inspect.cpp
 int cmd_parts(const CommandArgs& args);   // cmd_parts.cpp
 int cmd_convert(const CommandArgs& args); // cmd_convert.cpp
+int cmd_link(const CommandArgs& args);    // cmd_link.cpp
 
 struct Command
 {

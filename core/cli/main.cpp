@@ -13,8 +13,9 @@ const std::vector<Command>& commands()
 {
     static const std::vector<Command> list = {
         {"inspect", "inspect MESH [--json]                 vertices, faces, closed, manifold, components, genus, bbox", cmd_inspect},
-        {"parts", "parts MODEL [--json | --csv]          parts list of a .zome.json or .vef model", cmd_parts},
-        {"convert", "convert MODEL -o OUT                   between model formats (.zome.json, .vef)", cmd_convert},
+        {"parts", "parts MODEL [--json | --csv] [--have KITS]  parts list and kit plan of a .zome.json or .vef model", cmd_parts},
+        {"convert", "convert MODEL -o OUT [-o OUT2 ...]     to .zome.json, .vef, .glb, .obj (+.mtl) or .csv", cmd_convert},
+        {"link", "link MODEL | link --decode FRAGMENT -o OUT   share-link fragment of a model, and back", cmd_link},
     };
     return list;
 }

@@ -1,6 +1,7 @@
 #pragma once
 //! \file model_io.h
-//! Model reading and writing chosen by file name extension: `.zome.json` (also `.json`) and `.vef`.
+//! Model reading and writing chosen by file name extension. Read: `.zome.json` (also `.json`) and
+//! `.vef`. Write also: `.glb`, `.obj` (with an `.mtl` beside it) and `.csv` (the parts list).
 //! The CLI and the wasm session both come through here.
 
 #include <string>

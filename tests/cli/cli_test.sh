@@ -38,6 +38,16 @@ expect_output "convert"           'wrote .*bunny\.zome\.json' convert "$bunny" -
 expect_output "parts of converted json" '"R1": 78,' parts "$tmp/bunny.zome.json" --json
 expect_output "parts of converted vef"  '"Y2": 18,?$' parts "$tmp/bunny.vef" --json
 expect_output "help" 'zomeify parts MODEL' --help
+expect_output "kit plan"          '^kit plan: 4 x Creator 3 \+ 1 x Creator 1 \(3198 parts\)' parts "$bunny"
+expect_output "kits owned"        '^missing with your kits: 29 B0, 8 B1' parts "$bunny" --have "creator3, 2x creator1"
+expect_output "kit plan json"     '"parts_bought": 3198' parts "$bunny" --json
+expect_output "exports"           'wrote .*bunny\.obj' convert "$bunny" -o "$tmp/bunny.glb" -o "$tmp/bunny.obj" -o "$tmp/bunny.csv"
+if [ -s "$tmp/bunny.glb" ] && [ "$(head -c 4 "$tmp/bunny.glb")" = glTF ] && [ -s "$tmp/bunny.mtl" ] \
+   && grep -q '^PST-B1-BLU,B1,blue,74.86,158$' "$tmp/bunny.csv"; then ok; else bad "export files"; fi
+link=$("${cli[@]}" link "$bunny" 2>/dev/null)
+if [[ "$link" =~ ^m=1\.[A-Za-z0-9_-]+$ ]] && [ ${#link} -le 3000 ]; then ok; else bad "link format/length: ${#link}"; fi
+expect_output "link decode"       'wrote .*linked\.vef \(392 balls, 968 struts\)' link --decode "#$link" -o "$tmp/linked.vef"
+expect_output "linked parts"      '"B2": 5,' parts "$tmp/linked.vef" --json
 
 printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/nonzome.vef"
 head -c 700 "$bunny" > "$tmp/truncated.vef"
@@ -58,6 +68,10 @@ expect_error "truncated json" 'syntax error'          parts "$tmp/truncated.zome
 expect_error "empty"          'empty'                 parts "$tmp/empty.vef"
 expect_error "unknown format" 'unknown model format'  parts "$shared/data/meshes/cube.obj"
 expect_error "convert no -o"  'missing -o'            convert "$bunny"
+expect_error "bad kit"        "unknown kit 'creator9'" parts "$bunny" --have creator9
+expect_error "bad link"       'share link is damaged'  link --decode 'm=1.AAAAAAAA' -o "$tmp/x.vef"
+expect_error "not a link"     'not a zomeify share link' link --decode 'hello' -o "$tmp/x.vef"
+expect_error "bad out format" 'unknown model format'   convert "$bunny" -o "$tmp/x.stl"
 
 echo "cli: $pass passed, $fail failed"
 [ $fail -eq 0 ]

@@ -1,0 +1,52 @@
+#pragma once
+//! \file build_geometry.h
+//! What a built model looks like, for the exporters: real sizes in millimetres (ball 17.673 mm
+//! across, strut lengths node centre to node centre), Zome colours, and one placement per ball
+//! and per strut. Strut thickness is approximate (the real struts are not round).
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/zome/model.h"
+#include "core/zome/slots.h"
+
+namespace zomeify {
+
+struct SimpleMesh
+{
+    std::vector<std::array<float, 3>> positions;
+    std::vector<std::array<float, 3>> normals;
+    std::vector<uint32_t> indices; //!< triangles, counter-clockwise from outside
+};
+
+//! A closed cylinder along +Y from y = 0 to y = length.
+SimpleMesh make_cylinder(float radius, float length, int sides);
+//! A UV sphere centred at the origin.
+SimpleMesh make_sphere(float radius, int slices, int stacks);
+
+//! Linear RGB colour of a strut colour, and of the white balls.
+std::array<float, 3> zome_color_linear(Color c);
+std::array<float, 3> ball_color_linear();
+
+inline constexpr float kStrutRadiusMm = 3.0f;
+
+struct Placement
+{
+    std::array<float, 3> translation; //!< mm
+    std::array<float, 4> rotation;    //!< unit quaternion x, y, z, w taking +Y to the strut
+};
+
+struct BuildGeometry
+{
+    std::vector<std::array<float, 3>> ball_centres;                        //!< mm
+    std::array<std::vector<Placement>, kStrutKindCount> struts_by_kind;    //!< per StrutKind
+};
+
+//! Placements of every ball and strut (InvalidInputError if a strut is not a Zome vector).
+BuildGeometry build_geometry(const ZomeModel& model);
+
+//! Applies a placement to a point of a template mesh.
+std::array<float, 3> place(const Placement& p, const std::array<float, 3>& v);
+
+} // namespace zomeify

@@ -1,0 +1,160 @@
+#include "core/io/share_link.h"
+#include "core/zome/slots.h"
+
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/base/errors.h"
+#include "core/io/byte_codec.h"
+#include "core/io/model_io.h"
+#include "core/io/vef.h"
+#include "tests/support/model_compare.h"
+#include "tests/support/paths.h"
+
+using namespace zomeify;
+
+namespace {
+
+ZomeModel bunny()
+{
+    return read_vef_file(test::shared_path("data/vef/bunny.vef"));
+}
+
+ZomeModel icosahedron()
+{
+    return read_model_file(test::test_data_path("samples/icosahedron.zome.json"));
+}
+
+std::string link_error(const std::string& link)
+{
+    try
+    {
+        decode_share_link(link);
+    }
+    catch (const InvalidInputError& e)
+    {
+        const std::string msg = e.what();
+        EXPECT_EQ(msg.find('\n'), std::string::npos);
+        return msg;
+    }
+    ADD_FAILURE() << "no error for link " << link.substr(0, 80);
+    return {};
+}
+
+std::string body(const ZomeModel& m)
+{
+    return encode_share_link(m).substr(4); // after "m=1."
+}
+
+} // namespace
+
+TEST(ShareLink, BunnyRoundTripAndLength)
+{
+    const ZomeModel b = bunny();
+    const std::string link = encode_share_link(b);
+    EXPECT_LE(link.size(), 3000u) << "the paper's bunny (968 struts) must fit in 3,000 characters";
+    EXPECT_EQ(link.substr(0, 4), "m=1.");
+    const ZomeModel back = decode_share_link(link);
+    EXPECT_EQ(test::canonical(back), test::canonical(b));
+    // Decoding yields the canonical numbering: a second trip is bit-identical.
+    EXPECT_EQ(encode_share_link(back), link);
+    EXPECT_EQ(decode_share_link(encode_share_link(back)), back);
+}
+
+TEST(ShareLink, FacesTransformAndComponentsSurvive)
+{
+    ZomeModel m = icosahedron();
+    m.transform.scale = 0.125;
+    m.transform.translation = {1.5, -2.0, 1.0 / 3.0};
+    // A second component: a lone B2 strut far away, and an isolated ball.
+    const ZVec far{{0, 40, 0, 0, 0, 0}};
+    m.nodes.push_back(far);
+    m.nodes.push_back(far + zome_vector(vector_id(5, 2)));
+    m.nodes.push_back(ZVec{{0, 0, 0, 60, 0, 0}});
+    m.struts.push_back({12, 13});
+    const ZomeModel back = decode_share_link("https://example.org/zomeify/#x=1&" + encode_share_link(m) + "&y=2");
+    EXPECT_EQ(test::canonical(back), test::canonical(m));
+    EXPECT_EQ(back.faces.size(), 20u);
+}
+
+TEST(ShareLink, ModelLinkModelThroughTheCliFormats)
+{
+    const ZomeModel b = bunny();
+    const std::string path = test::temp_path("from_link.zome.json");
+    write_model_file(path, decode_share_link(encode_share_link(b)));
+    EXPECT_EQ(test::canonical(read_model_file(path)), test::canonical(b));
+}
+
+TEST(ShareLink, HostileLinksGiveClearErrors)
+{
+    EXPECT_NE(link_error("").find("no m="), std::string::npos);
+    EXPECT_NE(link_error("#q=1.AAAA").find("no m="), std::string::npos);
+    EXPECT_NE(link_error("m=2.AAAA").find("version 2"), std::string::npos);
+    EXPECT_NE(link_error("m=x.AAAA").find("version"), std::string::npos);
+    EXPECT_NE(link_error("m=1.AA*A").find("unexpected character"), std::string::npos);
+    EXPECT_NE(link_error("m=1.").find("ends early"), std::string::npos);
+
+    // Huge counts in a valid header.
+    ByteWriter w;
+    w.u8(0);
+    w.varint(uint64_t{1} << 40);
+    w.varint(3);
+    EXPECT_NE(link_error("m=1." + base64url_encode(w.bytes())).find("node count"), std::string::npos);
+
+    // A strut vector id that is no Zome vector.
+    ByteWriter v;
+    v.u8(0);
+    v.varint(2);
+    v.varint(1);
+    for (int i = 0; i < 6; ++i)
+        v.zigzag(0);
+    v.varint(1);
+    v.u8(200);
+    v.varint(0);
+    EXPECT_NE(link_error("m=1." + base64url_encode(v.bytes())).find("not a Zome vector"), std::string::npos);
+
+    // A face that follows a strut its node does not have.
+    ZomeModel ico = icosahedron();
+    std::string good = body(ico);
+    std::vector<uint8_t> bytes = base64url_decode(good);
+    bytes.back() = 60; // last face corner: neighbour index 60 of at most 5
+    EXPECT_NE(link_error("m=1." + base64url_encode(bytes)).find("missing strut"), std::string::npos);
+
+    // Garbage appended to a valid link.
+    bytes = base64url_decode(good);
+    bytes.push_back(7);
+    EXPECT_NE(link_error("m=1." + base64url_encode(bytes)).find("unexpected data"), std::string::npos);
+}
+
+TEST(ShareLink, TruncatedAndRandomLinksNeverCrash)
+{
+    const std::string good = encode_share_link(bunny());
+    for (size_t cut = 0; cut < good.size(); cut += 7)
+        EXPECT_THROW(decode_share_link(good.substr(0, cut)), InvalidInputError) << "cut at " << cut;
+    std::mt19937 rng(2024);
+    const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789-_";
+    for (int trial = 0; trial < 400; ++trial)
+    {
+        std::string m = good;
+        for (int k = 0; k < 3; ++k)
+            m[4 + rng() % (m.size() - 4)] = alphabet[rng() % alphabet.size()];
+        try
+        {
+            decode_share_link(m); // may decode to another valid model
+        }
+        catch (const InvalidInputError&)
+        {
+        }
+        std::string junk = "m=1.";
+        for (size_t n = rng() % 200; n > 0; --n)
+            junk.push_back(alphabet[rng() % alphabet.size()]);
+        try
+        {
+            decode_share_link(junk);
+        }
+        catch (const InvalidInputError&)
+        {
+        }
+    }
+}
