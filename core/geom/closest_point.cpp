@@ -44,11 +44,32 @@ double corner_angle(const Vec3& e1, const Vec3& e2)
     return std::atan2(e1.cross(e2).norm(), e1.dot(e2));
 }
 
-float pruning_bound(double best_distance_squared)
+// Float box distances are within a few float epsilons of `magnitude` of the truth (beyond the
+// padding of the boxes); a margin of 1e-6 * magnitude covers that. Boxes are kept while their
+// squared distance is at most (best + margin)^2, rounded up, and never above FLT_MAX, so that
+// the empty child of a one-leaf root (box distance +inf) is never pushed.
+float window(double best_distance_squared, double margin)
 {
-    const double x = best_distance_squared * (1.0 + 1e-6);
+    const double r = std::sqrt(best_distance_squared) + margin;
+    const double x = r * r;
+    if (!(x < static_cast<double>(std::numeric_limits<float>::max())))
+    {
+        return std::numeric_limits<float>::max();
+    }
     const float f = static_cast<float>(x);
     return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+// Starts loading what a stack entry points to while the traversal works on something else: a
+// random query misses the caches on most nodes and triangles, so overlapping those misses is
+// worth more than any arithmetic saving. A hint only; compiles to nothing where unsupported.
+inline void prefetch(const void* address)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    __builtin_prefetch(address);
+#else
+    (void)address;
+#endif
 }
 
 // Squared distance from (px, py, pz) to child `i`'s box of `node`.
@@ -85,20 +106,32 @@ SurfaceProjector::SurfaceProjector(TriangleMesh mesh, const BvhOptions& options)
         const double len = n.norm();
         n = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
     }
-    packed_.reserve(mesh_.triangles.size());
+    half_extent_ = 0.5 * bvh_.bounds().extent().maxCoeff();
+    std::vector<uint32_t> renumber(mesh_.positions.size(), BvhNode::kInvalid);
+    leaf_triangles_.reserve(mesh_.triangles.size());
     for (const uint32_t t : bvh_.order())
     {
-        const auto& tri = mesh_.triangles[t];
-        packed_.push_back({mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]], t});
+        std::array<uint32_t, 3> local{};
+        for (int k = 0; k < 3; ++k)
+        {
+            const uint32_t v = mesh_.triangles[t][k];
+            if (renumber[v] == BvhNode::kInvalid)
+            {
+                renumber[v] = static_cast<uint32_t>(leaf_vertices_.size());
+                leaf_vertices_.push_back(mesh_.positions[v]);
+            }
+            local[k] = renumber[v];
+        }
+        leaf_triangles_.push_back(local);
     }
 }
 
 ClosestPoint SurfaceProjector::project(const Vec3& p) const
 {
-    TrianglePoint best{Vec3::Zero(), Vec3::Zero(), std::numeric_limits<double>::infinity(), TriangleFeature::face};
+    double best = std::numeric_limits<double>::infinity();
     uint32_t best_id = 0;
     search(p, best, best_id);
-    return finish(best, best_id);
+    return finish(p, best_id);
 }
 
 ClosestPoint SurfaceProjector::project(const Vec3& p, uint32_t hint) const
@@ -108,14 +141,15 @@ ClosestPoint SurfaceProjector::project(const Vec3& p, uint32_t hint) const
         return project(p);
     }
     const auto& tri = mesh_.triangles[hint];
-    TrianglePoint best =
-        closest_point_on_triangle(p, mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]]);
+    double best =
+        closest_point_on_triangle(p, mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]])
+            .distance_squared;
     uint32_t best_id = hint;
     search(p, best, best_id);
-    return finish(best, best_id);
+    return finish(p, best_id);
 }
 
-void SurfaceProjector::search(const Vec3& p, TrianglePoint& best, uint32_t& best_id) const
+void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) const
 {
     struct Entry
     {
@@ -128,15 +162,20 @@ void SurfaceProjector::search(const Vec3& p, TrianglePoint& best, uint32_t& best
     int top = 0;
 
     const BvhNode* nodes = bvh_.nodes().data();
-    const PackedTriangle* triangles = packed_.data();
+    const std::array<uint32_t, 3>* triangles = leaf_triangles_.data();
+    const Vec3* vertices = leaf_vertices_.data();
+    const uint32_t* ids = bvh_.order().data();
     const Vec3& origin = bvh_.origin();
     const float px = static_cast<float>(p.x() - origin.x());
     const float py = static_cast<float>(p.y() - origin.y());
     const float pz = static_cast<float>(p.z() - origin.z());
     // Box distances are lower bounds up to float rounding (boxes rounded outward and padded);
-    // prune only boxes farther than the best triangle so far plus a relative slack that covers
-    // the rounding of the query point and of the distance itself.
-    float bound = pruning_bound(best.distance_squared);
+    // they are compared against the best distance widened by a margin for that rounding.
+    const double magnitude =
+        std::max({std::abs(p.x() - origin.x()), std::abs(p.y() - origin.y()), std::abs(p.z() - origin.z())}) +
+        half_extent_;
+    const double margin = 1e-6 * magnitude;
+    float bound = window(best, margin);
 
     uint32_t node_index = 0;
     for (;;)
@@ -144,17 +183,26 @@ void SurfaceProjector::search(const Vec3& p, TrianglePoint& best, uint32_t& best
         const BvhNode& node = nodes[node_index];
         const float d0 = box_distance_squared(node, 0, px, py, pz);
         const float d1 = box_distance_squared(node, 1, px, py, pz);
+        // Branch-free ordering and pushes: which child is nearer, and whether either survives,
+        // is a coin toss the predictor cannot learn. The near child goes on top.
         const int near = d1 < d0 ? 1 : 0;
-        const int far = 1 - near;
-        const float dnear = near == 0 ? d0 : d1;
-        const float dfar = near == 0 ? d1 : d0;
-        if (dfar <= bound && node.child[far] != BvhNode::kInvalid)
+        const int far = near ^ 1;
+        const float dnear = near == 1 ? d1 : d0;
+        const float dfar = near == 1 ? d0 : d1;
+        stack[top] = {node.child[far], node.count[far], dfar};
+        top += dfar <= bound ? 1 : 0;
+        stack[top] = {node.child[near], node.count[near], dnear};
+        top += dnear <= bound ? 1 : 0;
+        for (int side = 0; side < 2; ++side)
         {
-            stack[top++] = {node.child[far], node.count[far], dfar};
-        }
-        if (dnear <= bound && node.child[near] != BvhNode::kInvalid)
-        {
-            stack[top++] = {node.child[near], node.count[near], dnear};
+            if (node.count[side] == 0)
+            {
+                prefetch(nodes + (node.child[side] == BvhNode::kInvalid ? 0 : node.child[side]));
+            }
+            else
+            {
+                prefetch(triangles + node.child[side]);
+            }
         }
         // Pop the nearest pending entry that may still hold something closer; leaves are tested
         // on the spot, an inner node ends the loop and is expanded above.
@@ -174,13 +222,13 @@ void SurfaceProjector::search(const Vec3& p, TrianglePoint& best, uint32_t& best
             }
             for (uint32_t k = e.child; k < e.child + e.count; ++k)
             {
-                const PackedTriangle& t = triangles[k];
-                const TrianglePoint r = closest_point_on_triangle(p, t.a, t.b, t.c);
-                if (r.distance_squared < best.distance_squared)
+                const std::array<uint32_t, 3>& t = triangles[k];
+                const double d = point_triangle_distance_squared(p, vertices[t[0]], vertices[t[1]], vertices[t[2]]);
+                if (d < best)
                 {
-                    best = r;
-                    best_id = t.id;
-                    bound = pruning_bound(best.distance_squared);
+                    best = d;
+                    best_id = ids[k];
+                    bound = window(best, margin);
                 }
             }
         }
@@ -191,15 +239,19 @@ void SurfaceProjector::search(const Vec3& p, TrianglePoint& best, uint32_t& best
     }
 }
 
-ClosestPoint SurfaceProjector::finish(const TrianglePoint& best, uint32_t id) const
+ClosestPoint SurfaceProjector::finish(const Vec3& p, uint32_t id) const
 {
+    // The search compared distances only; the point, barycentrics and feature come from the
+    // robust kernel on the winning triangle, in the mesh's own coordinates.
+    const auto& tri = mesh_.triangles[id];
+    const TrianglePoint best =
+        closest_point_on_triangle(p, mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]]);
     ClosestPoint out;
     out.point = best.point;
     out.barycentric = best.barycentric;
     out.distance_squared = best.distance_squared;
     out.triangle = id;
     out.feature = best.feature;
-    const auto& tri = mesh_.triangles[id];
     const Vec3 n = best.barycentric[0] * vertex_normals_[tri[0]] + best.barycentric[1] * vertex_normals_[tri[1]] +
                    best.barycentric[2] * vertex_normals_[tri[2]];
     const double len = n.norm();

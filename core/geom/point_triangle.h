@@ -135,11 +135,11 @@ inline TrianglePoint closest_point_on_triangle(const Vec3& p, const Vec3& a, con
         const Vec3 q = b + t * (c - b);
         return {q, Vec3(0.0, 1.0 - t, t), (p - q).squaredNorm(), TriangleFeature::edge12};
     }
-    // Face region. va + vb + vc = |ab x ac|^2; for slivers it is lost in cancellation, and then
-    // the signs above are unreliable too, so only accept a well-conditioned, in-range answer.
+    // Face region. va + vb + vc = |ab x ac|^2 (Lagrange's identity); for slivers it is lost in
+    // cancellation, and then the signs above are unreliable too, so only a well-conditioned,
+    // in-range answer is accepted.
     const double den = va + vb + vc;
-    const double area2 = ab.cross(ac).squaredNorm();
-    if (area2 > 1e-14 * ab.squaredNorm() * ac.squaredNorm() && den > 0.0)
+    if (den > 1e-14 * ab.squaredNorm() * ac.squaredNorm())
     {
         const double v = vb / den;
         const double w = vc / den;
@@ -151,6 +151,70 @@ inline TrianglePoint closest_point_on_triangle(const Vec3& p, const Vec3& a, con
         }
     }
     return detail::closest_on_edges(p, a, b, c);
+}
+
+//! Squared distance only: the same region walk as closest_point_on_triangle without building
+//! the point, for the many candidates of a BVH search that do not win.
+inline double point_triangle_distance_squared(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
+{
+    const Vec3 ab = b - a;
+    const Vec3 ac = c - a;
+    const Vec3 ap = p - a;
+    const double d1 = ab.dot(ap);
+    const double d2 = ac.dot(ap);
+    if (d1 <= 0.0 && d2 <= 0.0)
+    {
+        return ap.squaredNorm();
+    }
+    const double d00 = ab.squaredNorm();
+    const double d01 = ab.dot(ac);
+    const double d11 = ac.squaredNorm();
+    // The dot products with p - b and p - c follow from those with p - a.
+    const double d3 = d1 - d00;
+    const double d4 = d2 - d01;
+    if (d3 >= 0.0 && d4 <= d3)
+    {
+        return (ap - ab).squaredNorm();
+    }
+    const double vc = d1 * d4 - d3 * d2;
+    if (vc <= 0.0 && d1 >= 0.0 && d3 <= 0.0)
+    {
+        const double t = d00 > 0.0 ? d1 / d00 : 0.0;
+        return (ap - t * ab).squaredNorm();
+    }
+    const double d5 = d1 - d01;
+    const double d6 = d2 - d11;
+    if (d6 >= 0.0 && d5 <= d6)
+    {
+        return (ap - ac).squaredNorm();
+    }
+    const double vb = d5 * d2 - d1 * d6;
+    if (vb <= 0.0 && d2 >= 0.0 && d6 <= 0.0)
+    {
+        const double t = d11 > 0.0 ? d2 / d11 : 0.0;
+        return (ap - t * ac).squaredNorm();
+    }
+    const double va = d3 * d6 - d5 * d4;
+    const double e1 = d4 - d3;
+    const double e2 = d5 - d6;
+    if (va <= 0.0 && e1 >= 0.0 && e2 >= 0.0)
+    {
+        const double t = e1 + e2 > 0.0 ? e1 / (e1 + e2) : 0.0;
+        return (ap - ab - t * (ac - ab)).squaredNorm();
+    }
+    // va + vb + vc = |ab x ac|^2: the same well-conditioned test as in closest_point_on_triangle.
+    const double den = va + vb + vc;
+    if (den > 1e-14 * d00 * d11)
+    {
+        const double v = vb / den;
+        const double w = vc / den;
+        if (v >= 0.0 && w >= 0.0 && v + w <= 1.0)
+        {
+            // The residual vector, not |ap|^2 minus a projection: no cancellation near the face.
+            return (ap - v * ab - w * ac).squaredNorm();
+        }
+    }
+    return detail::closest_on_edges(p, a, b, c).distance_squared;
 }
 
 } // namespace zomeify

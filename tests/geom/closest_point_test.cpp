@@ -37,7 +37,7 @@ TEST(GeomProjection, MatchesBruteForceOnProceduralSurfaces)
         SCOPED_TRACE(name);
         const SurfaceProjector projector(mesh);
         const double diagonal = test::bbox_diagonal(mesh);
-        for (int i = 0; i < 1500; ++i)
+        for (int i = 0; i < 500; ++i)
         {
             check_against_brute_force(projector, test::random_point_in_box(mesh, 0.3, rng), diagonal);
             check_against_brute_force(projector, test::random_point_near_surface(mesh, 0.05 * diagonal, rng),

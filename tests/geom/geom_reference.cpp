@@ -7,14 +7,12 @@
 namespace zomeify::test {
 namespace {
 
-using LVec = Eigen::Matrix<long double, 3, 1>;
-
-long double segment_distance_squared(const LVec& p, const LVec& a, const LVec& b)
+double segment_distance_squared(const Vec3& p, const Vec3& a, const Vec3& b)
 {
-    const LVec ab = b - a;
-    const long double len2 = ab.squaredNorm();
-    long double t = len2 > 0 ? (p - a).dot(ab) / len2 : 0;
-    t = std::clamp<long double>(t, 0, 1);
+    const Vec3 ab = b - a;
+    const double len2 = ab.squaredNorm();
+    double t = len2 > 0 ? (p - a).dot(ab) / len2 : 0;
+    t = std::clamp(t, 0.0, 1.0);
     return (p - (a + t * ab)).squaredNorm();
 }
 
@@ -49,25 +47,21 @@ bool ray_hits(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const 
 
 double reference_triangle_distance_squared(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 {
-    const LVec lp = p.cast<long double>();
-    const LVec la = a.cast<long double>();
-    const LVec lb = b.cast<long double>();
-    const LVec lc = c.cast<long double>();
-    long double best = std::min({segment_distance_squared(lp, la, lb), segment_distance_squared(lp, lb, lc),
-                                 segment_distance_squared(lp, lc, la)});
-    const LVec n = (lb - la).cross(lc - la);
-    const long double n2 = n.squaredNorm();
+    double best = std::min({segment_distance_squared(p, a, b), segment_distance_squared(p, b, c),
+                                 segment_distance_squared(p, c, a)});
+    const Vec3 n = (b - a).cross(c - a);
+    const double n2 = n.squaredNorm();
     if (n2 > 0)
     {
-        const LVec q = lp - ((lp - la).dot(n) / n2) * n;
-        const bool inside = (lb - la).cross(q - la).dot(n) >= 0 && (lc - lb).cross(q - lb).dot(n) >= 0 &&
-                            (la - lc).cross(q - lc).dot(n) >= 0;
+        const Vec3 q = p - ((p - a).dot(n) / n2) * n;
+        const bool inside = (b - a).cross(q - a).dot(n) >= 0 && (c - b).cross(q - b).dot(n) >= 0 &&
+                            (a - c).cross(q - c).dot(n) >= 0;
         if (inside)
         {
-            best = std::min(best, (lp - q).squaredNorm());
+            best = std::min(best, (p - q).squaredNorm());
         }
     }
-    return static_cast<double>(best);
+    return best;
 }
 
 double brute_force_distance_squared(const TriangleMesh& mesh, const Vec3& p)

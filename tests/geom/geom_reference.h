@@ -15,7 +15,7 @@
 
 namespace zomeify::test {
 
-//! Squared distance from p to triangle (a, b, c), computed in long double.
+//! Squared distance from p to triangle (a, b, c), by plane projection and edge segments.
 double reference_triangle_distance_squared(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 //! Smallest squared distance from p to any triangle of `mesh`.
