@@ -1,0 +1,74 @@
+#include "core/voxel/initial_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/base/stopwatch.h"
+
+namespace zomeify {
+
+GridLayoutOptions nudged_layout(const InitialModelOptions& options, int attempt)
+{
+    GridLayoutOptions layout;
+    layout.resolution = options.resolution;
+    layout.b1 = options.b1;
+    if (attempt == 0)
+        return layout;
+    // Alternate smaller and larger cells (1%, 1%, 2%, 2%, ...) so the resolution stays close to the
+    // user's choice, and shift by the additive recurrence of the plastic number, which spreads the
+    // offsets evenly over the cell for any number of attempts.
+    const int step = (attempt + 1) / 2;
+    layout.scale_factor = 1.0 + (attempt % 2 ? -0.01 : 0.01) * std::min(step, 4);
+    const double alpha[3] = {0.8191725133961645, 0.6710436067037893, 0.5497004779019703};
+    for (int a = 0; a < 3; ++a)
+    {
+        const double f = attempt * alpha[a];
+        layout.offset[a] = (f - std::floor(f)) - 0.5;
+    }
+    return layout;
+}
+
+InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSource& source,
+                                 const InitialModelOptions& options)
+{
+    Stopwatch clock;
+    InitialModel out;
+    InitialModelReport& rep = out.report;
+    VoxelGrid grid;
+    for (int attempt = 0; attempt <= std::max(0, options.max_retries); ++attempt)
+    {
+        rep.attempts = attempt + 1;
+        rep.layout = nudged_layout(options, attempt);
+        rep.grid = layout_grid(bbox[0], bbox[1], rep.layout);
+        grid = source(rep.grid);
+        rep.repair = repair_manifold(grid, options.repair);
+        if (rep.repair.manifold)
+            break;
+        std::ostringstream note;
+        note << "grid " << rep.grid.dims[0] << "x" << rep.grid.dims[1] << "x" << rep.grid.dims[2] << " (cell x"
+             << rep.layout.scale_factor << ", offset " << rep.layout.offset[0] << " " << rep.layout.offset[1] << " "
+             << rep.layout.offset[2] << "): " << rep.repair.remaining_bad_vertices
+             << " non-manifold vertices left with no simple cell to flip";
+        rep.notes.push_back(note.str());
+    }
+    rep.valid = rep.repair.manifold;
+    rep.voxels = grid.occupied_count();
+    Extraction ex = extract_boundary(grid);
+    out.model = std::move(ex.model);
+    rep.topology = ex.topology;
+    rep.seconds = clock.seconds();
+    return out;
+}
+
+InitialModel build_initial_model(const TriangleMesh& surface, const InsidePredicate& inside,
+                                 const InitialModelOptions& options)
+{
+    VoxelizeStats stats;
+    auto source = [&](const GridSpec& spec) { return voxelize(surface, spec, inside, &stats); };
+    InitialModel out = build_initial_model(bounding_box(surface), source, options);
+    out.report.voxelize = stats;
+    return out;
+}
+
+} // namespace zomeify

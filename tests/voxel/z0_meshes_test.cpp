@@ -1,0 +1,53 @@
+// Acceptance over the ten shared meshes (issue 4): at 8, 12, 16 and 24 cells along the longest
+// side, Z0 is a closed 2-manifold of B1 struts along the axes with no two nodes at one position.
+// The genus of Z0 against the genus of S is recorded (printed as the README's Markdown table).
+
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include <gtest/gtest.h>
+
+#include "core/voxel/initial_model.h"
+#include "tests/voxel/voxel_test_support.h"
+
+using namespace zomeify;
+using namespace zomeify::voxel_test;
+
+TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
+{
+    const int resolutions[] = {8, 12, 16, 24};
+    std::ostringstream table;
+    table << "| mesh | genus S |";
+    for (int n : resolutions)
+        table << " " << n << " cells |";
+    table << "\n|---|---|";
+    for (size_t i = 0; i < std::size(resolutions); ++i)
+        table << "---|";
+    table << "\n";
+    for (const auto& name : shared_mesh_names())
+    {
+        const LoadedSurface& s = shared_surface(name);
+        table << "| " << name << " | " << s.genus << " |";
+        for (int n : resolutions)
+        {
+            SCOPED_TRACE(name + " at " + std::to_string(n) + " cells");
+            InitialModelOptions options;
+            options.resolution = n;
+            const InitialModel z0 = build_initial_model(s.mesh, s.predicate(), options);
+            EXPECT_TRUE(z0.report.valid);
+            EXPECT_EQ(closed_manifold_problem(z0.model), "");
+            EXPECT_EQ(lattice_problem(z0.model), "");
+            EXPECT_EQ(model_genus(z0.model), z0.report.topology.genus);
+            EXPECT_EQ(z0.report.topology.components, 1);
+            const long long g = z0.report.topology.genus;
+            table << " " << (g == s.genus ? "kept" : "**lost**") << " (g " << g << "), " << z0.model.nodes.size()
+                  << " nodes, " << std::fixed << std::setprecision(1) << 1000.0 * z0.report.seconds << " ms";
+            if (z0.report.attempts > 1)
+                table << ", " << z0.report.attempts - 1 << " nudge" << (z0.report.attempts > 2 ? "s" : "");
+            table << " |";
+        }
+        table << "\n";
+    }
+    std::cout << table.str();
+}
