@@ -537,8 +537,11 @@ Face SurfaceMesh::remove_edge(Edge e)
 {
     if (!is_remove_edge_ok(e))
         throw TopologyError("remove_edge: the edge does not separate two faces that can merge");
-    const Halfedge h = halfedge(e, 0);
-    const Halfedge o = halfedge(e, 1);
+    // Keep the older (lower-index) face, so that split_face followed by remove_edge gives the
+    // original face its handle back.
+    const int keep = face(halfedge(e, 0)).idx() < face(halfedge(e, 1)).idx() ? 0 : 1;
+    const Halfedge h = halfedge(e, keep);
+    const Halfedge o = halfedge(e, 1 - keep);
     const Face fh = face(h), fo = face(o);
     const Halfedge a = prev(h), b = next(h), c = prev(o), d = next(o);
     for (Halfedge x = d; x != o; x = next(x))
@@ -646,6 +649,7 @@ void SurfaceMesh::reserve(size_t n_vertices, size_t n_edges, size_t n_faces)
     eprops_.reserve(n_edges);
     hprops_.reserve(2 * n_edges);
     fprops_.reserve(n_faces);
+    on_reserve(n_vertices);
 }
 
 bool SurfaceMesh::has_capacity_for(size_t more_vertices, size_t more_edges, size_t more_faces) const
@@ -654,7 +658,7 @@ bool SurfaceMesh::has_capacity_for(size_t more_vertices, size_t more_edges, size
     return vertices_size() + more_vertices <= vout_.vector().capacity()
         && edges_size() + more_edges <= edeleted_.vector().capacity()
         && halfedges_size() + 2 * more_edges <= links_.vector().capacity()
-        && faces_size() + more_faces <= fhalf_.vector().capacity();
+        && faces_size() + more_faces <= fhalf_.vector().capacity() && has_extra_capacity_for(more_vertices);
 }
 
 void SurfaceMesh::garbage_collection(GarbageMap* map)

@@ -180,8 +180,9 @@ public:
     //! Whether remove_edge(e) may merge the two faces of e: e has two distinct faces and both
     //! endpoints keep valence ≥ 2 (the merged face then has no dangling edge).
     bool is_remove_edge_ok(Edge e) const;
-    //! Removes e and merges its two faces into one (the face of halfedge(e, 0) is kept and
-    //! returned). Throws TopologyError if !is_remove_edge_ok.
+    //! Removes e and merges its two faces into one; the lower-index face is kept and returned
+    //! (so split_face then remove_edge restores the original handle). Throws TopologyError if
+    //! !is_remove_edge_ok.
     Face remove_edge(Edge e);
     //! Builds faces over the existing vertices 0..n-1 in one pass (the mesh must have no edges).
     //! Throws TopologyError naming the face or vertex at fault for a repeated vertex, an edge
@@ -279,6 +280,10 @@ protected:
     virtual void on_vertex_removing(Vertex) {}
     //! Called at the end of garbage_collection() and clear().
     virtual void on_compacted() {}
+    //! Called at the end of reserve(), for derived structures sized by the vertex count.
+    virtual void on_reserve(size_t) {}
+    //! Extra condition of has_capacity_for() from derived structures.
+    virtual bool has_extra_capacity_for(size_t) const { return true; }
 
     //! Appends an edge from a to b (no faces, next/prev unset).
     Halfedge new_edge(Vertex a, Vertex b);

@@ -123,27 +123,28 @@ private:
             if (m_.is_deleted(h))
                 continue;
             const HalfedgeLinks& l = m_.links(h);
-            const std::string hn = "halfedge " + name(h);
+            // Names are built only when a problem is reported: validate runs after every test edit.
+            const auto hn = [h] { return "halfedge " + name(h); };
             if (!m_.is_valid(l.to))
             {
-                report(MeshProblem::Connectivity, hn + " points to a missing vertex");
+                report(MeshProblem::Connectivity, hn() + " points to a missing vertex");
                 continue;
             }
             if (!m_.is_valid(l.next) || !m_.is_valid(l.prev))
             {
-                report(MeshProblem::Connectivity, hn + " has a missing next or prev");
+                report(MeshProblem::Connectivity, hn() + " has a missing next or prev");
                 continue;
             }
             if (m_.prev(l.next) != h || m_.next(l.prev) != h)
-                report(MeshProblem::Connectivity, hn + ": next and prev are not inverse");
+                report(MeshProblem::Connectivity, hn() + ": next and prev are not inverse");
             if (m_.from_vertex(l.next) != l.to)
-                report(MeshProblem::Connectivity, hn + ": next does not start where it ends");
+                report(MeshProblem::Connectivity, hn() + ": next does not start where it ends");
             if (m_.face(l.next) != l.face)
-                report(MeshProblem::Connectivity, hn + ": next lies in another face");
+                report(MeshProblem::Connectivity, hn() + ": next lies in another face");
             if (l.face.is_valid() && !m_.is_valid(l.face))
-                report(MeshProblem::Connectivity, hn + " lies in a missing face");
+                report(MeshProblem::Connectivity, hn() + " lies in a missing face");
             if (l.to == m_.from_vertex(h))
-                report(MeshProblem::Connectivity, hn + " is a loop");
+                report(MeshProblem::Connectivity, hn() + " is a loop");
         }
         for (MeshIndex i = 0; i < m_.vertices_size(); ++i)
         {
@@ -211,14 +212,14 @@ private:
             const Vertex v(i);
             if (m_.is_deleted(v))
                 continue;
-            const std::string vn = "vertex " + name(v);
+            const auto vn = [v] { return "vertex " + name(v); };
             const Halfedge start = m_.halfedge(v);
             if (degree[i] == 0 || !start.is_valid())
             {
                 if (degree[i] != 0 || start.is_valid())
-                    report(MeshProblem::Connectivity, vn + ": isolated but has edges");
+                    report(MeshProblem::Connectivity, vn() + ": isolated but has edges");
                 else if (opt_.min_valence > 0)
-                    report(MeshProblem::LowValence, vn + " is isolated");
+                    report(MeshProblem::LowValence, vn() + " is isolated");
                 continue;
             }
             size_t count = 0;
@@ -227,34 +228,34 @@ private:
             {
                 if (m_.from_vertex(h) != v)
                 {
-                    report(MeshProblem::Connectivity, vn + ": rotation leaves the vertex");
+                    report(MeshProblem::Connectivity, vn() + ": rotation leaves the vertex");
                     break;
                 }
                 ++count;
                 h = m_.ccw_rotated(h);
             } while (h != start && count <= degree[i]);
             if (count != degree[i])
-                report(MeshProblem::NonManifoldVertex, vn + ": its " + std::to_string(degree[i])
+                report(MeshProblem::NonManifoldVertex, vn() + ": its " + std::to_string(degree[i])
                                                            + " edges do not form one rotation cycle");
             else if (gaps[i] > 1)
-                report(MeshProblem::NonManifoldVertex, vn + " touches " + std::to_string(gaps[i])
+                report(MeshProblem::NonManifoldVertex, vn() + " touches " + std::to_string(gaps[i])
                                                            + " boundary gaps (faces meet at a point)");
             if (gaps[i] > 0 && !m_.is_boundary(start))
-                report(MeshProblem::Connectivity, vn + " is on a boundary but its halfedge is not");
+                report(MeshProblem::Connectivity, vn() + " is on a boundary but its halfedge is not");
             if (degree[i] < opt_.min_valence)
-                report(MeshProblem::LowValence, vn + " has valence " + std::to_string(degree[i]));
-            check_double_edges(v, start, vn);
+                report(MeshProblem::LowValence, vn() + " has valence " + std::to_string(degree[i]));
+            check_double_edges(v, start);
         }
     }
 
-    void check_double_edges(Vertex v, Halfedge start, const std::string& vn)
+    void check_double_edges(Vertex v, Halfedge start)
     {
         for (Halfedge a = start;;)
         {
             const Vertex va = m_.to_vertex(a);
             for (Halfedge b = m_.ccw_rotated(a); b != start; b = m_.ccw_rotated(b))
                 if (m_.to_vertex(b) == va && va.idx() > v.idx())
-                    report(MeshProblem::DoubleEdge, vn + " and " + name(va) + " are joined by two edges");
+                    report(MeshProblem::DoubleEdge, "vertex " + name(v) + " and " + name(va) + " are joined by two edges");
             a = m_.ccw_rotated(a);
             if (a == start)
                 break;
@@ -352,22 +353,25 @@ void check_zome(const ZomeMesh& m, Validator& val)
             continue;
         const Halfedge h = SurfaceMesh::halfedge(e, 0);
         const int id = vector_id_of(m.vector(h));
-        std::ostringstream en;
-        en << "edge " << e << " (" << m.from_vertex(h) << "->" << m.to_vertex(h) << ")";
+        const auto en = [&] {
+            std::ostringstream os;
+            os << "edge " << e << " (" << m.from_vertex(h) << "->" << m.to_vertex(h) << ")";
+            return os.str();
+        };
         if (id < 0)
         {
-            val.report(MeshProblem::NonZomeEdge, en.str() + " has vector " + [&] {
+            val.report(MeshProblem::NonZomeEdge, en() + " has vector " + [&] {
                 std::ostringstream os;
                 os << m.vector(h);
                 return os.str();
             }() + ", not a Zome vector");
             if (m.vector_id(h) != kNoZomeVector || m.vector_id(SurfaceMesh::opposite(h)) != kNoZomeVector)
-                val.report(MeshProblem::WrongVectorId, en.str() + " stores a Zome vector id for a non-Zome vector");
+                val.report(MeshProblem::WrongVectorId, en() + " stores a Zome vector id for a non-Zome vector");
             continue;
         }
         const int opposite_id = vector_id(opposite_slot(vector_slot(id)), vector_size(id));
         if (m.vector_id(h) != id || m.vector_id(SurfaceMesh::opposite(h)) != opposite_id)
-            val.report(MeshProblem::WrongVectorId, en.str() + " stores vector ids "
+            val.report(MeshProblem::WrongVectorId, en() + " stores vector ids "
                                                         + std::to_string(m.vector_id(h)) + "/"
                                                         + std::to_string(m.vector_id(SurfaceMesh::opposite(h)))
                                                         + ", expected " + std::to_string(id) + "/"
@@ -381,17 +385,20 @@ void check_zome(const ZomeMesh& m, Validator& val)
         const Vertex v(i);
         if (m.is_deleted(v))
             continue;
-        std::ostringstream vn;
-        vn << "vertex " << v;
+        const auto vn = [v] {
+            std::ostringstream os;
+            os << "vertex " << v;
+            return os.str();
+        };
         const auto [it, inserted] = seen.emplace(m.position(v), v);
         if (!inserted)
         {
             std::ostringstream os;
-            os << vn.str() << " sits at " << m.position(v) << " like " << it->second;
+            os << vn() << " sits at " << m.position(v) << " like " << it->second;
             val.report(MeshProblem::DuplicatePosition, os.str());
         }
         else if (m.find_vertex(m.position(v)) != v)
-            val.report(MeshProblem::PositionIndex, vn.str() + " is not found at its position");
+            val.report(MeshProblem::PositionIndex, vn() + " is not found at its position");
         // Slots of one node: at most 62 distinct, so a bit mask makes this O(valence).
         const Halfedge start = m.halfedge(v);
         if (!start.is_valid())
@@ -405,19 +412,20 @@ void check_zome(const ZomeMesh& m, Validator& val)
             if (s >= 0)
             {
                 if (used & (uint64_t{1} << s))
-                    val.report(MeshProblem::SlotConflict, vn.str() + " has two struts in slot " + std::to_string(s));
+                    val.report(MeshProblem::SlotConflict, vn() + " has two struts in slot " + std::to_string(s));
                 used |= uint64_t{1} << s;
             }
             h = m.ccw_rotated(h);
         } while (h != start && ++guard < m.halfedges_size());
     }
-    for (const auto& [p, v] : m.position_index())
+    m.position_index().for_each([&](const ZVec& p, Vertex v) {
         if (!m.is_valid(v) || m.position(v) != p)
         {
             std::ostringstream os;
             os << "the position index maps " << p << " to " << v << ", which is not there";
             val.report(MeshProblem::PositionIndex, os.str());
         }
+    });
     if (m.position_index_size() != m.n_vertices())
         val.report(MeshProblem::PositionIndex, "the position index has " + std::to_string(m.position_index_size())
                                                    + " entries for " + std::to_string(m.n_vertices()) + " nodes");

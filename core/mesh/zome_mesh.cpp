@@ -50,7 +50,7 @@ Vertex ZomeMesh::add_vertex(ZVec p)
         throw TopologyError("add_vertex: a node already sits at " + describe(p));
     const Vertex v = SurfaceMesh::add_vertex();
     zpos_[v] = p;
-    index_.emplace(p, v);
+    index_.insert(p, v);
     return v;
 }
 
@@ -58,7 +58,7 @@ Vertex ZomeMesh::add_vertex_unchecked(ZVec p)
 {
     const Vertex v = SurfaceMesh::add_vertex();
     zpos_[v] = p;
-    index_.emplace(p, v);
+    index_.insert(p, v);
     return v;
 }
 
@@ -68,11 +68,10 @@ void ZomeMesh::move_vertex(Vertex v, ZVec p)
         return;
     if (!is_position_free(p))
         throw TopologyError("move_vertex: a node already sits at " + describe(p));
-    const auto it = index_.find(zpos_[v]);
-    if (it != index_.end() && it->second == v)
-        index_.erase(it);
+    if (index_.find(zpos_[v]) == v)
+        index_.erase(zpos_[v]);
     zpos_[v] = p;
-    index_.emplace(p, v);
+    index_.insert(p, v);
     const Halfedge start = halfedge(v);
     if (!start.is_valid())
         return;
@@ -119,9 +118,8 @@ void ZomeMesh::on_edge_added(Edge e)
 
 void ZomeMesh::on_vertex_removing(Vertex v)
 {
-    const auto it = index_.find(zpos_[v]);
-    if (it != index_.end() && it->second == v)
-        index_.erase(it);
+    if (index_.find(zpos_[v]) == v)
+        index_.erase(zpos_[v]);
 }
 
 void ZomeMesh::on_compacted()
@@ -137,7 +135,7 @@ void ZomeMesh::rebuild_index()
     {
         const Vertex v(i);
         if (!is_deleted(v))
-            index_.emplace(zpos_[v], v);
+            index_.insert(zpos_[v], v);
     }
 }
 

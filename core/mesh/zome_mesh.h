@@ -9,13 +9,12 @@
 //!    nodes at one position" is an O(1) check.
 //!
 //! Reads are safe from any number of threads. Edits are not: the annealer serialises commits
-//! and keeps capacity reserved (SurfaceMesh::reserve) so arrays never move under readers. The
-//! position index is a std::unordered_map, whose inserts may rehash: readers must not run
-//! find_vertex concurrently with add_vertex/move_vertex/remove_vertex.
+//! and keeps capacity reserved (reserve(), has_capacity_for()) so that neither the arrays nor the
+//! position index move under concurrent readers.
 
 #include <cstdint>
-#include <unordered_map>
 
+#include "core/mesh/position_index.h"
 #include "core/mesh/surface_mesh.h"
 #include "core/zome/slots.h"
 #include "core/zome/zvec.h"
@@ -43,10 +42,9 @@ public:
     //! The node at p, or invalid (exact lookup, O(1)).
     Vertex find_vertex(const ZVec& p) const
     {
-        const auto it = index_.find(p);
-        return it == index_.end() ? Vertex() : it->second;
+        return index_.find(p);
     }
-    bool is_position_free(const ZVec& p) const { return index_.find(p) == index_.end(); }
+    bool is_position_free(const ZVec& p) const { return !index_.contains(p); }
     const ZVec& position(Vertex v) const { return zpos_[v]; }
     //! The property holding all positions (indexed by vertex; deleted entries are stale).
     const VertexProperty<ZVec>& positions() const { return zpos_; }
@@ -56,7 +54,7 @@ public:
     //! Number of entries in the position index (equals n_vertices() when consistent).
     size_t position_index_size() const { return index_.size(); }
     //! The position index itself (for validation and statistics).
-    const std::unordered_map<ZVec, Vertex, ZVecHash>& position_index() const { return index_; }
+    const PositionIndex& position_index() const { return index_; }
     //!@}
 
     //! \name Struts
@@ -93,6 +91,8 @@ protected:
     void on_edge_added(Edge e) override;
     void on_vertex_removing(Vertex v) override;
     void on_compacted() override;
+    void on_reserve(size_t n_vertices) override { index_.reserve(n_vertices); }
+    bool has_extra_capacity_for(size_t more_vertices) const override { return index_.has_capacity_for(more_vertices); }
 
 private:
     void bind_properties();
@@ -101,7 +101,7 @@ private:
 
     VertexProperty<ZVec> zpos_;
     HalfedgeProperty<uint8_t> zvec_;
-    std::unordered_map<ZVec, Vertex, ZVecHash> index_;
+    PositionIndex index_;
 };
 
 } // namespace zomeify
