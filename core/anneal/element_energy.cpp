@@ -1,0 +1,85 @@
+#include "core/anneal/element_energy.h"
+
+#include "core/mesh/circulators.h"
+
+namespace zomeify {
+
+EnergyFixed node_distance_energy(const ZVec& p, const SurfaceContext& context, const EnergyOptions& options) noexcept
+{
+    return quantize(distance_value(context.node_sample(p), options));
+}
+
+StrutEnergy strut_energy(const ZVec& a, const ZVec& b, const SurfaceContext& context,
+                         const EnergyOptions& options) noexcept
+{
+    // a + b is exact and symmetric in a and b, so both orientations of a strut agree.
+    LatticeSum twice_mid = lattice_sum(a);
+    twice_mid += b;
+    const SurfaceSample mid = context.sample(twice_mid, 2);
+    StrutEnergy out;
+    out.distance = quantize(distance_value(mid, options));
+    out.tangential = quantize(tangential_value(difference(a, b), mid.normal));
+    return out;
+}
+
+EnergyFixed corner_energy(const ZVec& prev, const ZVec& at, const ZVec& next, const SurfaceContext& context) noexcept
+{
+    const Vec3 n = context.node_sample(at).normal;
+    return quantize(corner_value(difference(at, next), difference(at, prev), n));
+}
+
+FaceEnergy face_energy(std::span<const ZVec> corners, const SurfaceContext& context,
+                       const EnergyOptions& options) noexcept
+{
+    FaceEnergy out;
+    const size_t k = corners.size();
+    LatticeSum sum;
+    for (size_t i = 0; i < k; ++i)
+    {
+        sum += corners[i];
+        out.normal += corner_energy(corners[(i + k - 1) % k], corners[i], corners[(i + 1) % k], context);
+    }
+    out.corners = static_cast<int>(k);
+    out.distance = quantize(distance_value(context.sample(sum, out.corners), options));
+    return out;
+}
+
+FaceEnergy face_energy(const ZomeMesh& mesh, Face f, const SurfaceContext& context,
+                       const EnergyOptions& options) noexcept
+{
+    // Walks the face once: the corner at to_vertex(h) lies between from_vertex(h) and
+    // to_vertex(next(h)). Same per-corner values as the span version, in another order, which the
+    // exact integer sum does not see.
+    FaceEnergy out;
+    LatticeSum sum;
+    for (Halfedge h : face_halfedges(mesh, f))
+    {
+        const ZVec& at = mesh.position(mesh.to_vertex(h));
+        sum += at;
+        out.normal += corner_energy(mesh.position(mesh.from_vertex(h)), at,
+                                    mesh.position(mesh.to_vertex(mesh.next(h))), context);
+        ++out.corners;
+    }
+    out.distance = quantize(distance_value(context.sample(sum, out.corners), options));
+    return out;
+}
+
+EnergyFixed fairing_energy(const ZVec& p, const LatticeSum& ring_sum, int ring_size) noexcept
+{
+    const LatticeSum excess = lattice_sum(p).times(ring_size) - ring_sum;
+    return quantize(fairing_value(excess, ring_size));
+}
+
+EnergyFixed fairing_energy(const ZomeMesh& mesh, Vertex v) noexcept
+{
+    LatticeSum ring;
+    int k = 0;
+    for (Vertex w : adjacent_vertices(mesh, v))
+    {
+        ring += mesh.position(w);
+        ++k;
+    }
+    return fairing_energy(mesh.position(v), ring, k);
+}
+
+} // namespace zomeify

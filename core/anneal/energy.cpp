@@ -1,0 +1,41 @@
+#include "core/anneal/energy.h"
+
+#include "core/anneal/element_energy.h"
+#include "core/base/errors.h"
+#include "core/mesh/element_ranges.h"
+
+namespace zomeify {
+
+EnergyTerms evaluate_energy(const ZomeMesh& mesh, const SurfaceContext& context, const EnergyOptions& options)
+{
+    if (options.w_complexity != 0.0 && options.target_nodes == 0)
+    {
+        throw InvalidInputError("energy: the complexity term needs a target node count (N_target > 0)");
+    }
+    EnergySums sums;
+    for (Vertex v : vertices(mesh))
+    {
+        sums.distance += node_distance_energy(mesh.position(v), context, options);
+        sums.fairing += fairing_energy(mesh, v);
+        ++sums.nodes;
+    }
+    for (Edge e : edges(mesh))
+    {
+        const StrutEnergy s = strut_energy(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
+                                           context, options);
+        sums.distance += s.distance;
+        sums.tangential += s.tangential;
+        ++sums.struts;
+    }
+    for (Face f : faces(mesh))
+    {
+        const FaceEnergy fe = face_energy(mesh, f, context, options);
+        sums.distance += fe.distance;
+        sums.normal += fe.normal;
+        sums.corners += fe.corners;
+        ++sums.faces;
+    }
+    return energy_terms(sums, options);
+}
+
+} // namespace zomeify

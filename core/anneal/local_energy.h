@@ -1,0 +1,44 @@
+#pragma once
+//! \file local_energy.h
+//! The energy of a local change, from the change alone (design.md §3.3, paper §5.2 "simulate"):
+//! the differences of every sum and count that applying the change would cause. It reads only the
+//! removed elements, the corners of removed faces, the endpoints of removed and added struts and
+//! those endpoints' 1-rings, never the global state, so any number of threads may run it at once
+//! on disjoint tagged regions. Turning it into ΔE is O(1) (EnergyState::delta_energy).
+//!
+//! For the reads to be stable, the caller's tag region must keep the 1-rings of the changed
+//! struts' endpoints from moving while it runs (their positions enter E_fair).
+
+#include <cstdint>
+
+#include "core/anneal/energy_options.h"
+#include "core/anneal/energy_sums.h"
+#include "core/anneal/local_change.h"
+#include "core/anneal/surface_context.h"
+#include "core/mesh/zome_mesh.h"
+
+namespace zomeify {
+
+//! Whether simulate_change could evaluate a change.
+enum class ChangeStatus : uint8_t
+{
+    Ok,
+    Overflow,        //!< a list of the change (or the internal scratch) is full
+    UnknownNode,     //!< an added strut ends at a position that is neither an added node nor a
+                     //!< surviving node of the removed region
+    KeptStrutToRemovedNode //!< a surviving node keeps a strut to a removed node
+};
+
+//! The differences of the sums and counts (meaningful only when status is Ok).
+struct EnergyDelta
+{
+    EnergySums sums;
+    ChangeStatus status = ChangeStatus::Ok;
+    bool ok() const noexcept { return status == ChangeStatus::Ok; }
+};
+
+//! What applying `change` to `mesh` would do to the energy's sums. Does not modify anything.
+EnergyDelta simulate_change(const ZomeMesh& mesh, const LocalChange& change, const SurfaceContext& context,
+                            const EnergyOptions& options) noexcept;
+
+} // namespace zomeify

@@ -1,0 +1,65 @@
+#pragma once
+//! \file surface_context.h
+//! SurfaceContext: what the energy needs to know about the input surface S for one sample of the
+//! Zome mesh (design.md §3.3, §3.7): the squared distance to π(p) in b0 units, the side of S the
+//! sample is on (which forbidden zone applies) and the surface normal at π(p).
+//!
+//! Samples are given exactly, as a LatticeSum and a divisor (node: 1, strut midpoint: 2, face
+//! barycentre: 3 or 4), mapped to mesh units by the model transform and projected through a
+//! ProjectionCache keyed by the exact sum, so a position that comes back (the common case in
+//! annealing) costs one hash lookup.
+
+#include "core/anneal/lattice_sum.h"
+#include "core/geom/closest_point.h"
+#include "core/geom/inside.h"
+#include "core/geom/projection_cache.h"
+#include "core/zome/model.h"
+
+namespace zomeify {
+
+//! The surface quantities of one sample.
+struct SurfaceSample
+{
+    double distance_squared = 0.0; //!< ‖p − π(p)‖² in b0² (mesh distance / transform scale, squared)
+    Vec3 normal = Vec3::UnitZ();   //!< unit outward normal of S at π(p) (SurfaceProjector's)
+    bool inside = false;           //!< p strictly inside S (InsideTest; points on S are outside)
+};
+
+//! Immutable after construction except for its cache, which is thread-safe: sample() may be called
+//! from any number of threads at once. Holds a reference to the projector, which must outlive it.
+class SurfaceContext
+{
+public:
+    //! Throws InvalidInputError if the transform's scale is not a positive finite number.
+    SurfaceContext(const SurfaceProjector& projector, const ModelTransform& transform,
+                   const ProjectionCacheOptions& cache = {});
+    SurfaceContext(const SurfaceContext&) = delete;
+    SurfaceContext& operator=(const SurfaceContext&) = delete;
+
+    //! The sample at sum / divisor (Zome units).
+    SurfaceSample sample(const LatticeSum& sum, int divisor) const noexcept;
+    //! The sample at a node position.
+    SurfaceSample node_sample(const ZVec& p) const noexcept { return sample(lattice_sum(p), 1); }
+
+    //! Zome units → mesh units (p_mesh = scale · p + translation).
+    Vec3 to_mesh(const Vec3& zome) const noexcept { return scale_ * zome + translation_; }
+
+    const ModelTransform& transform() const noexcept { return transform_; }
+    const SurfaceProjector& projector() const noexcept { return projector_; }
+    //! Cache counters (hits, misses, size).
+    ProjectionCacheStats cache_stats() const { return cache_.stats(); }
+    //! Empties the cache (results never change; only speed does).
+    void clear_cache() { cache_.clear(); }
+
+private:
+    const SurfaceProjector& projector_;
+    InsideTest inside_;
+    ModelTransform transform_;
+    double scale_ = 1.0;
+    Vec3 translation_ = Vec3::Zero();
+    double inv_scale_squared_ = 1.0;
+    //! Mutable because a lookup stores what it computed; values are a pure function of the point.
+    mutable ProjectionCache cache_;
+};
+
+} // namespace zomeify
