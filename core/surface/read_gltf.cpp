@@ -1,6 +1,7 @@
 // glTF 2.0 (.gltf JSON and .glb) through tinygltf. Every triangle, strip and fan primitive of
 // every mesh instance in the scene is read, with the node transforms applied; points and lines
 // are skipped. Accessor ranges are checked here again rather than trusting the parser.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 

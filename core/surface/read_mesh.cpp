@@ -11,6 +11,9 @@ namespace zomeify {
 
 namespace {
 
+// Files larger than this are refused before reading (the page could not hold them either).
+constexpr unsigned long long max_mesh_file_bytes = 1ull << 30;
+
 enum class Format
 {
     obj,
@@ -113,6 +116,8 @@ PolygonSoup read_mesh_file(const std::string& path)
     const std::streamoff size = in.tellg();
     if (size < 0)
         throw IoError("cannot read '" + path + "'");
+    if (static_cast<unsigned long long>(size) > max_mesh_file_bytes)
+        throw InvalidInputError(base_name(path) + ": file is larger than 1 GiB");
     in.seekg(0, std::ios::beg);
     std::vector<uint8_t> bytes(static_cast<size_t>(size));
     if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size))

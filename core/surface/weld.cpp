@@ -1,5 +1,6 @@
 #include "core/surface/weld.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>

@@ -203,6 +203,29 @@ TEST(SurfaceBadInput, HugeCountsInHeaders)
     EXPECT_CONTAINS(read_error(stl, "m.stl"), "binary header says 2147483648 triangles");
 }
 
+TEST(SurfaceBadInput, MoebiusStripIsNotOrientable)
+{
+    PolygonSoup strip;
+    const int n = 12;
+    for (int i = 0; i < n; ++i)
+        for (const double w : {0.5, -0.5})
+        {
+            const double t = 2 * 3.14159265358979 * i / n;
+            strip.positions.push_back(
+                Vec3((2 + w * std::cos(t / 2)) * std::cos(t), (2 + w * std::cos(t / 2)) * std::sin(t), w * std::sin(t / 2)));
+        }
+    // Vertex 2i is a_i (w = +0.5), 2i + 1 is b_i; going once round swaps the two sides.
+    for (uint32_t i = 0; i + 1 < n; ++i)
+        strip.polygons.push_back({2 * i, 2 * i + 2, 2 * i + 3, 2 * i + 1});
+    strip.polygons.push_back({2 * (n - 1), 1, 0, 2 * (n - 1) + 1});
+    const SurfaceReport r = diagnose(strip);
+    EXPECT_EQ(r.non_orientable_components, 1u);
+    EXPECT_EQ(r.holes, 1u); // a Moebius strip has one boundary loop
+    EXPECT_FALSE(r.manifold);
+    EXPECT_EQ(r.flipped_faces, 0u);
+    EXPECT_CONTAINS(r.problem_summary(), "1 component cannot be oriented consistently");
+}
+
 TEST(SurfaceBadInput, TruncatedFiles)
 {
     const std::string ply = to_ply(cube_quads(), PlyEncoding::little_endian);
