@@ -72,19 +72,10 @@ inline void prefetch(const void* address)
 #endif
 }
 
-// Squared distance from (px, py, pz) to child `i`'s box of `node`.
-inline float box_distance_squared(const BvhNode& node, int i, float px, float py, float pz)
-{
-    const float dx = std::max(std::max(node.min_x[i] - px, px - node.max_x[i]), 0.0f);
-    const float dy = std::max(std::max(node.min_y[i] - py, py - node.max_y[i]), 0.0f);
-    const float dz = std::max(std::max(node.min_z[i] - pz, pz - node.max_z[i]), 0.0f);
-    return dx * dx + dy * dy + dz * dz;
-}
-
 } // namespace
 
 SurfaceProjector::SurfaceProjector(TriangleMesh mesh, const BvhOptions& options)
-    : mesh_(validated(std::move(mesh))), bvh_(triangle_boxes(mesh_), options)
+    : mesh_(validated(std::move(mesh))), bvh_(triangle_boxes(mesh_), options), wide_(bvh_)
 {
     vertex_normals_.assign(mesh_.positions.size(), Vec3::Zero());
     face_normals_.reserve(mesh_.triangles.size());
@@ -154,14 +145,13 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
     struct Entry
     {
         uint32_t child;
-        uint32_t count;
         float distance_squared;
     };
-    // One far child is pushed per level, plus the near one that is popped right away.
-    Entry stack[Bvh::kMaxDepth + 2];
+    // Each level leaves at most three siblings behind, plus the four children of the last node.
+    Entry stack[3 * Bvh::kMaxDepth + 4];
     int top = 0;
 
-    const BvhNode* nodes = bvh_.nodes().data();
+    const WideBvhNode* nodes = wide_.nodes().data();
     const std::array<uint32_t, 3>* triangles = leaf_triangles_.data();
     const Vec3* vertices = leaf_vertices_.data();
     const uint32_t* ids = bvh_.order().data();
@@ -180,29 +170,46 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
     uint32_t node_index = 0;
     for (;;)
     {
-        const BvhNode& node = nodes[node_index];
-        const float d0 = box_distance_squared(node, 0, px, py, pz);
-        const float d1 = box_distance_squared(node, 1, px, py, pz);
-        // Branch-free ordering and pushes: which child is nearer, and whether either survives,
-        // is a coin toss the predictor cannot learn. The near child goes on top.
-        const int near = d1 < d0 ? 1 : 0;
-        const int far = near ^ 1;
-        const float dnear = near == 1 ? d1 : d0;
-        const float dfar = near == 1 ? d0 : d1;
-        stack[top] = {node.child[far], node.count[far], dfar};
-        top += dfar <= bound ? 1 : 0;
-        stack[top] = {node.child[near], node.count[near], dnear};
-        top += dnear <= bound ? 1 : 0;
-        for (int side = 0; side < 2; ++side)
+        const WideBvhNode& node = nodes[node_index];
+        // Four box distances in straight-line code the compiler can keep in vector registers.
+        float d[4];
+        for (int j = 0; j < 4; ++j)
         {
-            if (node.count[side] == 0)
+            const float dx = std::max(std::max(node.min_x[j] - px, px - node.max_x[j]), 0.0f);
+            const float dy = std::max(std::max(node.min_y[j] - py, py - node.max_y[j]), 0.0f);
+            const float dz = std::max(std::max(node.min_z[j] - pz, pz - node.max_z[j]), 0.0f);
+            d[j] = dx * dx + dy * dy + dz * dz;
+        }
+        // Survivors go on the stack farthest first, so the nearest is popped next.
+        Entry near[4];
+        int count = 0;
+        for (int j = 0; j < 4; ++j)
+        {
+            if (node.child[j] != WideBvhNode::kEmpty && d[j] <= bound)
             {
-                prefetch(nodes + (node.child[side] == BvhNode::kInvalid ? 0 : node.child[side]));
+                Entry e{node.child[j], d[j]};
+                int k = count++;
+                for (; k > 0 && near[k - 1].distance_squared < e.distance_squared; --k)
+                {
+                    near[k] = near[k - 1];
+                }
+                near[k] = e;
+            }
+        }
+        for (int k = 0; k < count; ++k)
+        {
+            const uint32_t c = near[k].child;
+            if (WideBvhNode::is_leaf(c))
+            {
+                prefetch(triangles + WideBvhNode::leaf_first(c));
             }
             else
             {
-                prefetch(triangles + node.child[side]);
+                // A node is two cache lines.
+                prefetch(nodes + c);
+                prefetch(reinterpret_cast<const char*>(nodes + c) + 64);
             }
+            stack[top++] = near[k];
         }
         // Pop the nearest pending entry that may still hold something closer; leaves are tested
         // on the spot, an inner node ends the loop and is expanded above.
@@ -214,19 +221,21 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
             {
                 continue;
             }
-            if (e.count == 0)
+            if (!WideBvhNode::is_leaf(e.child))
             {
                 node_index = e.child;
                 descend = true;
                 break;
             }
-            for (uint32_t k = e.child; k < e.child + e.count; ++k)
+            const uint32_t first = WideBvhNode::leaf_first(e.child);
+            const uint32_t end = first + WideBvhNode::leaf_count(e.child);
+            for (uint32_t k = first; k < end; ++k)
             {
                 const std::array<uint32_t, 3>& t = triangles[k];
-                const double d = point_triangle_distance_squared(p, vertices[t[0]], vertices[t[1]], vertices[t[2]]);
-                if (d < best)
+                const double dist = point_triangle_distance_squared(p, vertices[t[0]], vertices[t[1]], vertices[t[2]]);
+                if (dist < best)
                 {
-                    best = d;
+                    best = dist;
                     best_id = ids[k];
                     bound = window(best, margin);
                 }
@@ -237,6 +246,16 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
             return;
         }
     }
+}
+
+size_t SurfaceProjector::memory_bytes() const
+{
+    return sizeof(*this) + mesh_.positions.capacity() * sizeof(Vec3) +
+           mesh_.triangles.capacity() * sizeof(mesh_.triangles[0]) +
+           (vertex_normals_.capacity() + face_normals_.capacity() + leaf_vertices_.capacity()) * sizeof(Vec3) +
+           leaf_triangles_.capacity() * sizeof(leaf_triangles_[0]) + bvh_.nodes().capacity() * sizeof(BvhNode) +
+           wide_.nodes().capacity() * sizeof(WideBvhNode) +
+           bvh_.order().capacity() * sizeof(uint32_t);
 }
 
 ClosestPoint SurfaceProjector::finish(const Vec3& p, uint32_t id) const

@@ -1,7 +1,13 @@
 // π(p) on the shared meshes: BVH build time, closest-point queries per second per thread for
 // points within 2 voxel sizes of the surface (voxel = longest bounding-box side / 24), on 1 and
 // 2 threads, cache hits per second, and peak memory. Prints one JSON object.
+// Rates are given per wall second and per CPU second of each thread: on a shared, loaded machine
+// the second is the meaningful one (wall time then also counts time other processes ran).
 // Usage: bench_projection [mesh.obj ...]   (names relative to the shared meshes folder)
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
 #include <iostream>
 #include <random>
 #include <string>
@@ -56,23 +62,58 @@ std::vector<Vec3> near_surface_points(const TriangleMesh& mesh, double radius, s
     return out;
 }
 
-// Median over kRuns of the queries per second of each of `threads` threads, all running `work`
-// over the whole point set at once.
-template <typename Work>
-double per_thread_rate(int threads, size_t count, const Work& work)
+// CPU time of the calling thread; wall time where the platform has no per-thread clock.
+double thread_seconds()
 {
-    const double seconds = bench::median_seconds(kRuns, [&] {
+#if defined(CLOCK_THREAD_CPUTIME_ID) && !defined(__EMSCRIPTEN__)
+    timespec ts{};
+    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &ts);
+    return static_cast<double>(ts.tv_sec) + 1e-9 * static_cast<double>(ts.tv_nsec);
+#else
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+#endif
+}
+
+double median(std::vector<double> v)
+{
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+struct Rate
+{
+    double per_wall_second;       // queries per wall second of one thread
+    double per_thread_cpu_second; // queries per CPU second of one thread
+};
+
+// Medians over kRuns of the per-thread rates when `threads` threads all run `work` over the
+// whole point set at once.
+template <typename Work>
+Rate per_thread_rate(int threads, size_t count, const Work& work)
+{
+    std::vector<double> wall;
+    std::vector<double> cpu;
+    for (int run = 0; run < kRuns; ++run)
+    {
+        std::vector<double> cpu_seconds(static_cast<size_t>(threads), 0.0);
+        Stopwatch clock;
         std::vector<std::thread> pool;
         for (int t = 0; t < threads; ++t)
         {
-            pool.emplace_back([&, t] { work(t); });
+            pool.emplace_back([&, t] {
+                const double start = thread_seconds();
+                work(t);
+                cpu_seconds[static_cast<size_t>(t)] = thread_seconds() - start;
+            });
         }
         for (std::thread& th : pool)
         {
             th.join();
         }
-    });
-    return static_cast<double>(count) / seconds;
+        wall.push_back(clock.seconds());
+        cpu.push_back(*std::max_element(cpu_seconds.begin(), cpu_seconds.end()));
+    }
+    return {static_cast<double>(count) / median(wall), static_cast<double>(count) / median(cpu)};
 }
 
 nlohmann::json bench_mesh(const std::string& name)
@@ -109,8 +150,8 @@ nlohmann::json bench_mesh(const std::string& name)
         }
         sums[t] = sum;
     };
-    const double rate1 = per_thread_rate(1, points.size(), project_all);
-    const double rate2 = per_thread_rate(2, points.size(), project_all);
+    const Rate rate1 = per_thread_rate(1, points.size(), project_all);
+    const Rate rate2 = per_thread_rate(2, points.size(), project_all);
 
     // Repeated exact positions: every query a cache hit after one warm-up pass.
     ProjectionCache cache(projector, {size_t{1} << 19, 64});
@@ -126,12 +167,10 @@ nlohmann::json bench_mesh(const std::string& name)
         }
         sums[t] = sum;
     };
-    const double cached1 = per_thread_rate(1, points.size(), cached_all);
-    const double cached2 = per_thread_rate(2, points.size(), cached_all);
+    const Rate cached1 = per_thread_rate(1, points.size(), cached_all);
+    const Rate cached2 = per_thread_rate(2, points.size(), cached_all);
 
-    const size_t projector_bytes = projector.bvh().nodes().size() * sizeof(BvhNode) +
-                                   mesh.triangles.size() * (3 * sizeof(Vec3) + 8 + sizeof(Vec3)) +
-                                   mesh.positions.size() * 2 * sizeof(Vec3);
+    const size_t projector_bytes = projector.memory_bytes();
     return {
         {"mesh", name},
         {"triangles", mesh.triangles.size()},
@@ -144,11 +183,15 @@ nlohmann::json bench_mesh(const std::string& name)
         {"voxel_size", voxel},
         {"query_radius", 2.0 * voxel},
         {"queries", points.size()},
-        {"queries_per_s_1_thread", rate1},
-        {"queries_per_s_per_thread_2_threads", rate2},
-        {"queries_per_s_total_2_threads", 2.0 * rate2},
-        {"cache_hits_per_s_1_thread", cached1},
-        {"cache_hits_per_s_per_thread_2_threads", cached2},
+        {"queries_per_s_1_thread", rate1.per_wall_second},
+        {"queries_per_cpu_s_1_thread", rate1.per_thread_cpu_second},
+        {"queries_per_s_per_thread_2_threads", rate2.per_wall_second},
+        {"queries_per_cpu_s_per_thread_2_threads", rate2.per_thread_cpu_second},
+        {"queries_per_s_total_2_threads", 2.0 * rate2.per_wall_second},
+        {"cache_hits_per_s_1_thread", cached1.per_wall_second},
+        {"cache_hits_per_cpu_s_1_thread", cached1.per_thread_cpu_second},
+        {"cache_hits_per_s_per_thread_2_threads", cached2.per_wall_second},
+        {"cache_hits_per_cpu_s_per_thread_2_threads", cached2.per_thread_cpu_second},
         {"checksum", sums[0]},
     };
 }
@@ -166,6 +209,18 @@ int main(int argc, char** argv)
     {
         names = {"rockerarm.obj", "fertility.obj"};
     }
+    // Load average at the start: rates per wall second are only comparable on an idle machine.
+    double load = -1.0;
+#if !defined(__EMSCRIPTEN__)
+    if (std::FILE* f = std::fopen("/proc/loadavg", "r"))
+    {
+        if (std::fscanf(f, "%lf", &load) != 1)
+        {
+            load = -1.0;
+        }
+        std::fclose(f);
+    }
+#endif
     nlohmann::json meshes = nlohmann::json::array();
     for (const std::string& name : names)
     {
@@ -176,6 +231,7 @@ int main(int argc, char** argv)
         {"platform", bench::platform()},
         {"runs", kRuns},
         {"hardware_threads", std::thread::hardware_concurrency()},
+        {"load_average_1min", load},
         {"meshes", meshes},
         {"peak_memory_mib", bench::peak_memory_mib()},
     };

@@ -1,4 +1,5 @@
 #include "core/geom/bvh.h"
+#include "core/geom/wide_bvh.h"
 
 #include <random>
 #include <vector>
@@ -59,6 +60,51 @@ void check_structure(const Bvh& bvh, const std::vector<Box3>& boxes, int max_lea
     }
 }
 
+// The 4-wide copy: the same leaves, every primitive once, boxes enclosing the primitives.
+void check_wide(const Bvh& bvh, const std::vector<Box3>& boxes)
+{
+    const WideBvh wide(bvh);
+    std::vector<int> seen(boxes.size(), 0);
+    std::vector<uint32_t> todo{0u};
+    size_t visited = 0;
+    while (!todo.empty())
+    {
+        const uint32_t index = todo.back();
+        todo.pop_back();
+        ASSERT_LT(index, wide.nodes().size());
+        ++visited;
+        const WideBvhNode& node = wide.nodes()[index];
+        for (int j = 0; j < 4; ++j)
+        {
+            const uint32_t c = node.child[j];
+            if (c == WideBvhNode::kEmpty)
+            {
+                EXPECT_TRUE(WideBvh::child_box(node, j).empty());
+                continue;
+            }
+            if (!WideBvhNode::is_leaf(c))
+            {
+                todo.push_back(c);
+                continue;
+            }
+            const Box3 box = WideBvh::child_box(node, j);
+            for (uint32_t k = WideBvhNode::leaf_first(c); k < WideBvhNode::leaf_first(c) + WideBvhNode::leaf_count(c); ++k)
+            {
+                const uint32_t prim = bvh.order()[k];
+                ++seen[prim];
+                EXPECT_TRUE((box.min.array() <= (boxes[prim].min - bvh.origin()).array()).all());
+                EXPECT_TRUE((box.max.array() >= (boxes[prim].max - bvh.origin()).array()).all());
+            }
+        }
+    }
+    EXPECT_EQ(visited, wide.nodes().size());
+    EXPECT_LE(wide.depth(), bvh.depth());
+    for (size_t i = 0; i < seen.size(); ++i)
+    {
+        ASSERT_EQ(seen[i], 1) << "primitive " << i;
+    }
+}
+
 TEST(GeomBvh, EveryTriangleInExactlyOneSmallLeaf)
 {
     for (const auto& [name, mesh] : test::procedural_surfaces())
@@ -67,6 +113,7 @@ TEST(GeomBvh, EveryTriangleInExactlyOneSmallLeaf)
         const std::vector<Box3> boxes = triangle_boxes(mesh);
         const Bvh bvh(boxes);
         check_structure(bvh, boxes, 4);
+        check_wide(bvh, boxes);
         EXPECT_LT(bvh.depth(), 40);
     }
 }
@@ -80,6 +127,7 @@ TEST(GeomBvh, LeafSizeOptionAndTinyInputs)
     {
         const std::vector<Box3> few(boxes.begin(), boxes.begin() + static_cast<std::ptrdiff_t>(n));
         check_structure(Bvh(few), few, 4);
+        check_wide(Bvh(few), few);
     }
 }
 
@@ -96,6 +144,7 @@ TEST(GeomBvh, CoincidentCentroidsKeepTheDepthBounded)
     }
     const Bvh bvh(boxes);
     check_structure(bvh, boxes, 4);
+    check_wide(bvh, boxes);
     EXPECT_LE(bvh.depth(), 14);
 }
 
