@@ -161,10 +161,17 @@ size_t SurfaceMesh::valence(Face f) const
     return n;
 }
 
-Vertex SurfaceMesh::add_vertex()
+Vertex SurfaceMesh::new_vertex()
 {
     vprops_.push_back();
     return Vertex(static_cast<MeshIndex>(vertices_size() - 1));
+}
+
+Vertex SurfaceMesh::add_vertex()
+{
+    const Vertex v = new_vertex();
+    notify_vertex_added(v);
+    return v;
 }
 
 Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b)
@@ -177,6 +184,8 @@ Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b)
     links_[h] = HalfedgeLinks{b, Halfedge(), Halfedge(), Face()};
     links_[opposite(h)] = HalfedgeLinks{a, Halfedge(), Halfedge(), Face()};
     on_edge_added(e);
+    if (observer_)
+        observer_->edge_added(e);
     return h;
 }
 
@@ -346,6 +355,8 @@ Face SurfaceMesh::try_add_face(std::span<const Vertex> vertices)
         set_next(h, nh);
     for (Vertex v : to_adjust)
         adjust_outgoing_halfedge(v);
+    if (observer_)
+        observer_->face_added(f);
     return f;
 }
 
@@ -380,6 +391,8 @@ void SurfaceMesh::adjust_outgoing_halfedge(Vertex v)
 
 void SurfaceMesh::remove_boundary_edge(Edge e)
 {
+    if (observer_)
+        observer_->edge_removing(e);
     const Halfedge h = halfedge(e, 0);
     const Halfedge o = halfedge(e, 1);
     const Halfedge a = prev(h), b = next(h), c = prev(o), d = next(o);
@@ -409,6 +422,8 @@ void SurfaceMesh::remove_face(Face f)
 {
     if (!is_valid(f))
         throw TopologyError("remove_face: invalid or deleted face");
+    if (observer_)
+        observer_->face_removing(f);
     HalfedgeBuffer hs;
     VertexBuffer vs;
     const Halfedge start = halfedge(f);
@@ -431,6 +446,8 @@ void SurfaceMesh::remove_face(Face f)
 
 void SurfaceMesh::delete_vertex_flag(Vertex v)
 {
+    if (observer_)
+        observer_->vertex_removing(v);
     on_vertex_removing(v);
     vdeleted_[v] = 1;
     vout_[v] = Halfedge();
@@ -488,6 +505,8 @@ Halfedge SurfaceMesh::split_face(Face f, Vertex a, Vertex b)
 {
     if (!is_split_ok(f, a, b))
         throw TopologyError("split_face: the diagonal is not allowed in this face");
+    if (observer_)
+        observer_->face_removing(f);
     Halfedge ha_in, hb_in;
     const Halfedge start = halfedge(f);
     Halfedge h = start;
@@ -518,6 +537,11 @@ Halfedge SurfaceMesh::split_face(Face f, Vertex a, Vertex b)
     links_[y].face = f;
     fhalf_[f] = y;
     fhalf_[g] = x;
+    if (observer_)
+    {
+        observer_->face_added(f);
+        observer_->face_added(g);
+    }
     return x;
 }
 
@@ -543,6 +567,12 @@ Face SurfaceMesh::remove_edge(Edge e)
     const Halfedge h = halfedge(e, keep);
     const Halfedge o = halfedge(e, 1 - keep);
     const Face fh = face(h), fo = face(o);
+    if (observer_)
+    {
+        observer_->face_removing(fh);
+        observer_->face_removing(fo);
+        observer_->edge_removing(e);
+    }
     const Halfedge a = prev(h), b = next(h), c = prev(o), d = next(o);
     for (Halfedge x = d; x != o; x = next(x))
         links_[x].face = fh;
@@ -558,6 +588,8 @@ Face SurfaceMesh::remove_edge(Edge e)
     ++deleted_faces_;
     edeleted_[e] = 1;
     ++deleted_edges_;
+    if (observer_)
+        observer_->face_added(fh);
     return fh;
 }
 
@@ -712,6 +744,8 @@ void SurfaceMesh::garbage_collection(GarbageMap* map)
         h = remap_h(h);
     deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
     on_compacted();
+    if (observer_)
+        observer_->compacted(m);
 }
 
 void SurfaceMesh::clear()

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/mesh/handles.h"
+#include "core/mesh/mesh_observer.h"
 #include "core/mesh/properties.h"
 
 namespace zomeify {
@@ -258,6 +259,13 @@ public:
     std::vector<std::string> face_property_names() const { return fprops_.names(); }
     //!@}
 
+    //! \name Observer
+    //! One optional observer of the primitive edits (mesh_observer.h); nullptr detaches.
+    //!@{
+    void set_observer(MeshObserver* observer) { observer_ = observer; }
+    MeshObserver* observer() const { return observer_; }
+    //!@}
+
     //! \name Low-level setters
     //! These break invariants on purpose; they exist for tests of the validator and for code
     //! that rebuilds connectivity wholesale. set_next also sets prev of the target.
@@ -285,6 +293,14 @@ protected:
     //! Extra condition of has_capacity_for() from derived structures.
     virtual bool has_extra_capacity_for(size_t) const { return true; }
 
+    //! Appends an isolated vertex without notifying the observer (derived classes complete the
+    //! vertex, then call notify_vertex_added).
+    Vertex new_vertex();
+    void notify_vertex_added(Vertex v)
+    {
+        if (observer_)
+            observer_->vertex_added(v);
+    }
     //! Appends an edge from a to b (no faces, next/prev unset).
     Halfedge new_edge(Vertex a, Vertex b);
     //! Appends a face with no halfedge (the caller links it).
@@ -313,6 +329,7 @@ private:
     EdgeProperty<uint8_t> edeleted_;
     FaceProperty<uint8_t> fdeleted_;
     size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+    MeshObserver* observer_ = nullptr;
 };
 
 } // namespace zomeify

@@ -48,17 +48,19 @@ Vertex ZomeMesh::add_vertex(ZVec p)
 {
     if (!is_position_free(p))
         throw TopologyError("add_vertex: a node already sits at " + describe(p));
-    const Vertex v = SurfaceMesh::add_vertex();
+    const Vertex v = new_vertex();
     zpos_[v] = p;
     index_.insert(p, v);
+    notify_vertex_added(v);
     return v;
 }
 
 Vertex ZomeMesh::add_vertex_unchecked(ZVec p)
 {
-    const Vertex v = SurfaceMesh::add_vertex();
+    const Vertex v = new_vertex();
     zpos_[v] = p;
     index_.insert(p, v);
+    notify_vertex_added(v);
     return v;
 }
 
@@ -68,20 +70,25 @@ void ZomeMesh::move_vertex(Vertex v, ZVec p)
         return;
     if (!is_position_free(p))
         throw TopologyError("move_vertex: a node already sits at " + describe(p));
+    if (observer())
+        observer()->vertex_moving(v);
     if (index_.find(zpos_[v]) == v)
         index_.erase(zpos_[v]);
     zpos_[v] = p;
     index_.insert(p, v);
     const Halfedge start = halfedge(v);
-    if (!start.is_valid())
-        return;
-    Halfedge h = start;
-    do
+    if (start.is_valid())
     {
-        update_vector_id(h);
-        update_vector_id(opposite(h));
-        h = ccw_rotated(h);
-    } while (h != start);
+        Halfedge h = start;
+        do
+        {
+            update_vector_id(h);
+            update_vector_id(opposite(h));
+            h = ccw_rotated(h);
+        } while (h != start);
+    }
+    if (observer())
+        observer()->vertex_moved(v);
 }
 
 Halfedge ZomeMesh::find_slot(Vertex v, int s) const
