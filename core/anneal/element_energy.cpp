@@ -22,14 +22,12 @@ StrutEnergy strut_energy(const ZVec& a, const ZVec& b, const SurfaceContext& con
     return out;
 }
 
-EnergyFixed corner_energy(const ZVec& prev, const ZVec& at, const ZVec& next, const SurfaceContext& context) noexcept
+EnergyFixed corner_energy(const ZVec& prev, const ZVec& at, const ZVec& next, const Vec3& n_at) noexcept
 {
-    const Vec3 n = context.node_sample(at).normal;
-    return quantize(corner_value(difference(at, next), difference(at, prev), n));
+    return quantize(corner_value(difference(at, next), difference(at, prev), n_at));
 }
 
-FaceEnergy face_energy(std::span<const ZVec> corners, const SurfaceContext& context,
-                       const EnergyOptions& options) noexcept
+FaceEnergy face_energy(std::span<const ZVec> corners, NodeNormals& normals, const EnergyOptions& options) noexcept
 {
     FaceEnergy out;
     const size_t k = corners.size();
@@ -37,15 +35,14 @@ FaceEnergy face_energy(std::span<const ZVec> corners, const SurfaceContext& cont
     for (size_t i = 0; i < k; ++i)
     {
         sum += corners[i];
-        out.normal += corner_energy(corners[(i + k - 1) % k], corners[i], corners[(i + 1) % k], context);
+        out.normal += corner_energy(corners[(i + k - 1) % k], corners[i], corners[(i + 1) % k], normals.at(corners[i]));
     }
     out.corners = static_cast<int>(k);
-    out.distance = quantize(distance_value(context.sample(sum, out.corners), options));
+    out.distance = quantize(distance_value(normals.context().sample(sum, out.corners), options));
     return out;
 }
 
-FaceEnergy face_energy(const ZomeMesh& mesh, Face f, const SurfaceContext& context,
-                       const EnergyOptions& options) noexcept
+FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const EnergyOptions& options) noexcept
 {
     // Walks the face once: the corner at to_vertex(h) lies between from_vertex(h) and
     // to_vertex(next(h)). Same per-corner values as the span version, in another order, which the
@@ -57,10 +54,10 @@ FaceEnergy face_energy(const ZomeMesh& mesh, Face f, const SurfaceContext& conte
         const ZVec& at = mesh.position(mesh.to_vertex(h));
         sum += at;
         out.normal += corner_energy(mesh.position(mesh.from_vertex(h)), at,
-                                    mesh.position(mesh.to_vertex(mesh.next(h))), context);
+                                    mesh.position(mesh.to_vertex(mesh.next(h))), normals.at(at));
         ++out.corners;
     }
-    out.distance = quantize(distance_value(context.sample(sum, out.corners), options));
+    out.distance = quantize(distance_value(normals.context().sample(sum, out.corners), options));
     return out;
 }
 

@@ -8,6 +8,7 @@
 #include <span>
 
 #include "core/anneal/energy_samples.h"
+#include "core/anneal/node_normals.h"
 #include "core/mesh/zome_mesh.h"
 
 namespace zomeify {
@@ -34,15 +35,15 @@ EnergyFixed node_distance_energy(const ZVec& p, const SurfaceContext& context, c
 StrutEnergy strut_energy(const ZVec& a, const ZVec& b, const SurfaceContext& context,
                          const EnergyOptions& options) noexcept;
 
-//! Normal value of corner `at` between `prev` and `next` (counter-clockwise seen from outside).
-EnergyFixed corner_energy(const ZVec& prev, const ZVec& at, const ZVec& next, const SurfaceContext& context) noexcept;
+//! Normal value of corner `at` between `prev` and `next` (counter-clockwise seen from outside),
+//! with n_at the surface normal at π(at).
+EnergyFixed corner_energy(const ZVec& prev, const ZVec& at, const ZVec& next, const Vec3& n_at) noexcept;
 
-//! The polygon with these corners, counter-clockwise seen from outside (at least 3).
-FaceEnergy face_energy(std::span<const ZVec> corners, const SurfaceContext& context,
-                       const EnergyOptions& options) noexcept;
+//! The polygon with these corners, counter-clockwise seen from outside (at least 3); node normals
+//! come from (and are remembered in) `normals`.
+FaceEnergy face_energy(std::span<const ZVec> corners, NodeNormals& normals, const EnergyOptions& options) noexcept;
 //! A face of the mesh (any number of corners).
-FaceEnergy face_energy(const ZomeMesh& mesh, Face f, const SurfaceContext& context,
-                       const EnergyOptions& options) noexcept;
+FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const EnergyOptions& options) noexcept;
 
 //! Fairing value of a node at p whose 1-ring sums to ring_sum over ring_size nodes.
 EnergyFixed fairing_energy(const ZVec& p, const LatticeSum& ring_sum, int ring_size) noexcept;

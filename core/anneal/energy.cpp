@@ -27,9 +27,12 @@ EnergyTerms evaluate_energy(const ZomeMesh& mesh, const SurfaceContext& context,
         sums.tangential += s.tangential;
         ++sums.struts;
     }
+    NodeNormals normals(context);
     for (Face f : faces(mesh))
     {
-        const FaceEnergy fe = face_energy(mesh, f, context, options);
+        // The list is sized for one local change, not a whole mesh: start afresh for every face.
+        normals.clear();
+        const FaceEnergy fe = face_energy(mesh, f, normals, options);
         sums.distance += fe.distance;
         sums.normal += fe.normal;
         sums.corners += fe.corners;

@@ -65,7 +65,7 @@ class LocalEnergy
 public:
     LocalEnergy(const ZomeMesh& mesh, const LocalChange& change, const SurfaceContext& context,
                 const EnergyOptions& options) noexcept
-        : mesh_(mesh), change_(change), context_(context), options_(options)
+        : mesh_(mesh), change_(change), context_(context), options_(options), normals_(context)
     {
     }
 
@@ -88,7 +88,7 @@ private:
         EnergySums& d = out_.sums;
         for (Vertex v : change_.removed_nodes())
         {
-            d.distance -= node_distance_energy(mesh_.position(v), context_, options_);
+            d.distance -= node_distance(mesh_.position(v));
             --d.nodes;
         }
         for (Edge e : change_.removed_struts())
@@ -101,7 +101,7 @@ private:
         }
         for (Face f : change_.removed_faces())
         {
-            const FaceEnergy fe = face_energy(mesh_, f, context_, options_);
+            const FaceEnergy fe = face_energy(mesh_, f, normals_, options_);
             d.distance -= fe.distance;
             d.normal -= fe.normal;
             d.corners -= fe.corners;
@@ -109,12 +109,20 @@ private:
         }
     }
 
+    // A node's distance sample, whose normal the corners at that node reuse.
+    EnergyFixed node_distance(const ZVec& p) noexcept
+    {
+        const SurfaceSample s = context_.node_sample(p);
+        normals_.remember(p, s.normal);
+        return quantize(distance_value(s, options_));
+    }
+
     void added_samples() noexcept
     {
         EnergySums& d = out_.sums;
         for (const ZVec& p : change_.added_nodes())
         {
-            d.distance += node_distance_energy(p, context_, options_);
+            d.distance += node_distance(p);
             ++d.nodes;
         }
         for (const NewStrut& s : change_.added_struts())
@@ -126,7 +134,7 @@ private:
         }
         for (const NewFace& f : change_.added_faces())
         {
-            const FaceEnergy fe = face_energy(f.view(), context_, options_);
+            const FaceEnergy fe = face_energy(f.view(), normals_, options_);
             d.distance += fe.distance;
             d.normal += fe.normal;
             d.corners += fe.corners;
@@ -233,6 +241,7 @@ private:
     const LocalChange& change_;
     const SurfaceContext& context_;
     const EnergyOptions& options_;
+    NodeNormals normals_;
     EnergyDelta out_;
     // Existing nodes whose fairing value changes (removed ones included).
     FixedList<Vertex, 4 * LocalChange::kMaxStruts + LocalChange::kMaxNodes> touched_;

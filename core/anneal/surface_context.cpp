@@ -31,4 +31,11 @@ SurfaceSample SurfaceContext::sample(const LatticeSum& sum, int divisor) const n
     return out;
 }
 
+Vec3 SurfaceContext::node_normal(const ZVec& p) const noexcept
+{
+    const LatticeSum sum = lattice_sum(p);
+    const Vec3 q = to_mesh(sum.divided(1));
+    return cache_.project(sum.key(1), q).normal;
+}
+
 } // namespace zomeify

@@ -40,6 +40,8 @@ public:
     SurfaceSample sample(const LatticeSum& sum, int divisor) const noexcept;
     //! The sample at a node position.
     SurfaceSample node_sample(const ZVec& p) const noexcept { return sample(lattice_sum(p), 1); }
+    //! Only the surface normal at π(p) of a node position (no inside test).
+    Vec3 node_normal(const ZVec& p) const noexcept;
 
     //! Zome units → mesh units (p_mesh = scale · p + translation).
     Vec3 to_mesh(const Vec3& zome) const noexcept { return scale_ * zome + translation_; }
