@@ -7,28 +7,20 @@ namespace zomeify {
 bool PositionIndex::insert(const ZVec& p, Vertex v)
 {
     if (!has_capacity_for(1))
-        rehash(table_.empty() ? 16 : (2 * (size_ + 1) > table_.size() / 2 ? 2 * table_.size() : table_.size()));
-    size_t tomb = table_.size();
+        rehash(table_.empty() ? 16 : (4 * (size_ + 1) > table_.size() ? 2 * table_.size() : table_.size()));
     for (size_t i = ZVecHash()(p) & mask_;; i = (i + 1) & mask_)
     {
         Entry& e = table_[i];
-        if (e.value == kEmpty)
+        const MeshIndex value = e.value.load(std::memory_order_relaxed);
+        if (value == kEmpty)
         {
-            // Reuse the first tombstone on the probe path: keeps chains short under churn.
-            Entry& target = tomb < table_.size() ? table_[tomb] : e;
-            if (&target == &e)
-                ++used_;
-            target.key = p;
-            target.value = v.idx();
+            e.key = p;
+            e.value.store(v.idx(), std::memory_order_release);
             ++size_;
+            ++used_;
             return true;
         }
-        if (e.value == kTombstone)
-        {
-            if (tomb == table_.size())
-                tomb = i;
-        }
-        else if (e.key == p)
+        if (value != kTombstone && e.key == p)
             return false;
     }
 }
@@ -40,11 +32,12 @@ bool PositionIndex::erase(const ZVec& p)
     for (size_t i = ZVecHash()(p) & mask_;; i = (i + 1) & mask_)
     {
         Entry& e = table_[i];
-        if (e.value == kEmpty)
+        const MeshIndex value = e.value.load(std::memory_order_relaxed);
+        if (value == kEmpty)
             return false;
-        if (e.value != kTombstone && e.key == p)
+        if (value != kTombstone && e.key == p)
         {
-            e.value = kTombstone;
+            e.value.store(kTombstone, std::memory_order_release);
             --size_;
             return true;
         }
@@ -79,8 +72,11 @@ void PositionIndex::rehash(size_t capacity)
     mask_ = capacity - 1;
     size_ = used_ = 0;
     for (const Entry& e : old)
-        if (e.value != kEmpty && e.value != kTombstone)
-            insert(e.key, Vertex(e.value));
+    {
+        const MeshIndex value = e.value.load(std::memory_order_relaxed);
+        if (value != kEmpty && value != kTombstone)
+            insert(e.key, Vertex(value));
+    }
 }
 
 } // namespace zomeify

@@ -2,10 +2,16 @@
 //! \file position_index.h
 //! PositionIndex: the exact position → node map behind "no two nodes at one position". Open
 //! addressing with linear probing in a power-of-two table at most half full, so a lookup is one
-//! hash and, typically, one or two cache lines; erased entries leave tombstones, cleared by the
-//! next rehash. Lookups are const and safe from many threads as long as nobody inserts or erases
-//! meanwhile; reserve() ahead makes inserts rehash-free up to that many entries.
+//! hash and, typically, one or two cache lines.
+//!
+//! Concurrency: one writer (the thread committing, under the annealer's lock) and any number of
+//! readers may run together, provided the writer does not rehash: check has_capacity_for() (or
+//! reserve()) before a parallel phase. A slot's key is written once, before its value is published
+//! with release order, and is never rewritten until the next rehash: erase leaves a tombstone and
+//! insert never reuses one. A concurrent find is therefore memory-safe but may be stale by one
+//! commit; re-check under the lock before acting on it.
 
+#include <atomic>
 #include <cstddef>
 #include <vector>
 
@@ -20,15 +26,17 @@ public:
     //! The vertex at p, or invalid.
     Vertex find(const ZVec& p) const
     {
-        if (size_ == 0)
+        // Reads only the table and the mask, which change in rehash alone (never concurrently).
+        if (table_.empty())
             return {};
         for (size_t i = ZVecHash()(p) & mask_;; i = (i + 1) & mask_)
         {
             const Entry& e = table_[i];
-            if (e.value == kEmpty)
+            const MeshIndex value = e.value.load(std::memory_order_acquire);
+            if (value == kEmpty)
                 return {};
-            if (e.value != kTombstone && e.key == p)
-                return Vertex(e.value);
+            if (value != kTombstone && e.key == p)
+                return Vertex(value);
         }
     }
     bool contains(const ZVec& p) const { return find(p).is_valid(); }
@@ -47,8 +55,11 @@ public:
     void for_each(F&& f) const
     {
         for (const Entry& e : table_)
-            if (e.value != kEmpty && e.value != kTombstone)
-                f(e.key, Vertex(e.value));
+        {
+            const MeshIndex value = e.value.load(std::memory_order_acquire);
+            if (value != kEmpty && value != kTombstone)
+                f(e.key, Vertex(value));
+        }
     }
 
 private:
@@ -57,7 +68,17 @@ private:
     struct Entry
     {
         ZVec key;
-        MeshIndex value = kEmpty;
+        std::atomic<MeshIndex> value{kEmpty};
+
+        Entry() = default;
+        // Copies happen only in rehash and in copies of the whole mesh, never concurrently.
+        Entry(const Entry& o) : key(o.key), value(o.value.load(std::memory_order_relaxed)) {}
+        Entry& operator=(const Entry& o)
+        {
+            key = o.key;
+            value.store(o.value.load(std::memory_order_relaxed), std::memory_order_relaxed);
+            return *this;
+        }
     };
     void rehash(size_t capacity);
 
