@@ -153,6 +153,8 @@ nlohmann::json bench_mesh(const std::string& name)
     const Rate rate1 = per_thread_rate(1, points.size(), project_all);
     const Rate rate2 = per_thread_rate(2, points.size(), project_all);
 
+    const double peak_before_cache_mib = bench::peak_memory_mib();
+
     // Repeated exact positions: every query a cache hit after one warm-up pass.
     ProjectionCache cache(projector, {size_t{1} << 19, 64});
     for (size_t i = 0; i < points.size(); ++i)
@@ -192,6 +194,8 @@ nlohmann::json bench_mesh(const std::string& name)
         {"cache_hits_per_cpu_s_1_thread", cached1.per_thread_cpu_second},
         {"cache_hits_per_s_per_thread_2_threads", cached2.per_wall_second},
         {"cache_hits_per_cpu_s_per_thread_2_threads", cached2.per_thread_cpu_second},
+        {"cache_capacity", size_t{1} << 19},
+        {"peak_memory_mib_before_cache", peak_before_cache_mib},
         {"checksum", sums[0]},
     };
 }
