@@ -42,7 +42,7 @@ EnergyOptions options_for(const ZomeModel& model)
 
 TEST(EnergyIncremental, DeltaEqualsFullRecomputationOnRandomEdits)
 {
-    constexpr int kEditsPerModel = 150;
+    constexpr int kEditsPerModel = 300;
     std::map<std::string, int> counts;
     for (const fixtures::NamedModel& named : fixtures::closed_models())
     {
