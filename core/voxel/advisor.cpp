@@ -51,9 +51,9 @@ std::string advice_message(int resolution, long long genus, const AdvisorResult&
     {
         const long long lost = want - genus;
         if (genus == 0)
-            os << handles(want) << " of this shape close up";
+            os << handles(want) << " of this shape " << (want == 1 ? "closes" : "close") << " up";
         else
-            os << lost << " of the " << want << " handles of this shape close up";
+            os << lost << " of the " << want << " handles of this shape " << (lost == 1 ? "closes" : "close") << " up";
     }
     else
     {
