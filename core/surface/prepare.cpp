@@ -161,7 +161,11 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
             hi = hi.cwiseMax(soup.positions[i]);
         }
     const bool any = lo.x() <= hi.x();
-    const double diagonal = any ? (hi - lo).norm() : 0.0;
+    // Coordinates near the double range overflow the diagonal; relative tolerances are then
+    // meaningless (an infinite one would weld everything), so only exact duplicates are welded.
+    const double raw_diagonal = any ? (hi - lo).norm() : 0.0;
+    const bool huge = !std::isfinite(raw_diagonal);
+    const double diagonal = huge ? 0.0 : raw_diagonal;
     if (any)
         for (int a = 0; a < 3; ++a)
         {
@@ -267,6 +271,8 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
                  topo.non_orientable_components == 0;
     describe_repairs(r);
     describe_problems(r, topo, original);
+    if (huge)
+        r.problems.push_back("coordinates are too large (the bounding box diagonal overflows); scale the model down");
     return out;
 }
 

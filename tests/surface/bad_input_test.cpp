@@ -92,6 +92,16 @@ TEST(SurfaceBadInput, NanAndInfCoordinates)
     EXPECT_CONTAINS(prepare_error(soup), "NaN/infinite");
 }
 
+TEST(SurfaceBadInput, HugeCoordinates)
+{
+    PolygonSoup soup = cube_quads();
+    for (Vec3& p : soup.positions)
+        p *= 1e308;
+    const SurfaceReport r = diagnose(soup);
+    EXPECT_EQ(r.vertices, 8u);
+    EXPECT_CONTAINS(r.problem_summary(), "coordinates are too large");
+}
+
 TEST(SurfaceBadInput, IndicesOutOfRange)
 {
     EXPECT_CONTAINS(read_error("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n", "m.obj"),
