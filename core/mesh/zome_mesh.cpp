@@ -106,6 +106,23 @@ Halfedge ZomeMesh::find_slot(Vertex v, int s) const
     return {};
 }
 
+bool ZomeMesh::is_new_strut_ok(Vertex a, Vertex b) const
+{
+    if (a == b)
+        return false;
+    const int s = slot_of(zpos_[b] - zpos_[a]);
+    // A second a–b edge would have the same vector, so the free-slot test also rules it out.
+    return s >= 0 && is_slot_free(a, s) && is_slot_free(b, opposite_slot(s));
+}
+
+int ZomeMesh::new_strut_id(const ZVec& p, Vertex b) const
+{
+    const int id = vector_id_of(zpos_[b] - p);
+    if (id < 0 || !is_slot_free(b, opposite_slot(vector_slot(id))))
+        return -1;
+    return id;
+}
+
 void ZomeMesh::update_vector_id(Halfedge h)
 {
     const int id = vector_id_of(vector(h));

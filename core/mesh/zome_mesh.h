@@ -75,6 +75,14 @@ public:
     Halfedge find_slot(Vertex v, int slot) const;
     //! Whether the vector from a to b is a Zome vector (exact; O(1)).
     bool is_zome_pair(Vertex a, Vertex b) const { return vector_id_of(zpos_[b] - zpos_[a]) >= 0; }
+    //! Whether v has no strut in that slot (O(valence)).
+    bool is_slot_free(Vertex v, int slot) const { return !find_slot(v, slot).is_valid(); }
+    //! Whether a new strut a–b is allowed (design.md §3.4): a Zome vector, its slot free at a and
+    //! the opposite slot free at b, and a, b not joined already (no doubly connected pair).
+    bool is_new_strut_ok(Vertex a, Vertex b) const;
+    //! The same for a strut from a node still to be placed at p to node b: the vector id of
+    //! p → b if it is a Zome vector whose slot is free at b, otherwise -1.
+    int new_strut_id(const ZVec& p, Vertex b) const;
     //!@}
 
     //! \name Low-level setters (break invariants; for validator tests and repair code)

@@ -55,6 +55,23 @@ TEST(MeshZome, PositionsSlotsAndIndex)
         for (Halfedge h : outgoing_halfedges(mesh, v))
             EXPECT_EQ(mesh.find_slot(v, mesh.slot(h)), h);
     }
+    for (Edge e : edges(mesh))
+        EXPECT_FALSE(mesh.is_new_strut_ok(mesh.vertex(e, 0), mesh.vertex(e, 1))); // already joined
+    for (Vertex v : vertices(mesh))
+        for (Halfedge h : outgoing_halfedges(mesh, v))
+            EXPECT_FALSE(mesh.is_slot_free(v, mesh.slot(h)));
+    // A node one b1 beyond a corner along +x reaches that corner if its −x slot is free there.
+    const Vertex corner = mesh.find_vertex(ZVec{{2, 0, 0, 0, 0, 0}});
+    ASSERT_TRUE(corner.is_valid());
+    const ZVec beyond{{4, 0, 0, 0, 0, 0}};
+    EXPECT_EQ(mesh.new_strut_id(beyond, corner), vector_id_of(ZVec{{-2, 0, 0, 0, 0, 0}}));
+    // From p = (−1, 0, 0) the strut would be a B2 in the corner's −x slot, which already holds
+    // its strut to the origin.
+    const ZVec behind{{0, -2, 0, 0, 0, 0}};
+    EXPECT_GE(vector_id_of(mesh.position(corner) - behind), 0);
+    EXPECT_EQ(mesh.new_strut_id(behind, corner), -1);
+    EXPECT_EQ(mesh.new_strut_id(beyond, mesh.find_vertex(ZVec{})), -1); // (−2φ, 0, 0) is no strut
+    EXPECT_EQ(mesh.new_strut_id(ZVec{{1, 0, 1, 0, 0, 0}}, corner), -1); // not a Zome vector
     EXPECT_THROW(mesh.add_vertex(mesh.position(Vertex(2))), TopologyError);
     EXPECT_FALSE(mesh.is_position_free(mesh.position(Vertex(2))));
     EXPECT_FALSE(mesh.find_vertex(ZVec{{50, 0, 0, 0, 0, 0}}).is_valid());
