@@ -76,7 +76,8 @@ void describe_repairs(SurfaceReport& r)
         r.repairs.push_back("triangulated " + plural(r.triangulated_polygons, "polygon", "polygons"));
     if (r.flipped_faces)
         r.repairs.push_back("flipped " + plural(r.flipped_faces, "face", "faces") +
-                            " to orient every component consistently and outward");
+                            " to orient every component consistently and outward" +
+                            (r.cavities ? " (cavities inward)" : ""));
 }
 
 void describe_problems(SurfaceReport& r, const TopologyInfo& t, const std::vector<uint32_t>& original)
@@ -264,6 +265,7 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
     r.non_manifold_vertices = topo.non_manifold_vertices;
     r.non_orientable_components = topo.non_orientable_components;
     r.components = topo.components;
+    r.cavities = topo.cavities;
     r.euler = topo.euler;
     r.genus = topo.genus;
     r.closed = r.faces > 0 && topo.boundary_edges == 0;

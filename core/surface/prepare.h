@@ -44,6 +44,7 @@ struct SurfaceReport
     size_t non_manifold_vertices = 0; //!< vertices whose faces form more than one fan
     size_t non_orientable_components = 0;
     size_t components = 0; //!< connected by shared edges
+    size_t cavities = 0;   //!< components inside an odd number of others, oriented inward
     long long euler = 0;   //!< V - E + F
     long long genus = 0;   //!< sum over components of (2 - chi - boundary loops) / 2
     bool closed = false;   //!< no boundary edges

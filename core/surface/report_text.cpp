@@ -41,7 +41,8 @@ std::string surface_report_table(const SurfaceReport& r, const std::string& name
     row("closed", yes_no(r.closed) + (r.closed ? "" : " (" + std::to_string(r.holes) + " holes, " +
                                                            std::to_string(r.boundary_edges) + " boundary edges)"));
     row("manifold", yes_no(r.manifold));
-    row("components", std::to_string(r.components));
+    row("components", std::to_string(r.components) +
+                          (r.cavities ? " (" + std::to_string(r.cavities) + " of them cavities)" : ""));
     row("euler", std::to_string(r.euler));
     row("genus", std::to_string(r.genus));
     row("bbox min", triple(r.bbox_min));
@@ -71,6 +72,7 @@ std::string surface_report_json(const SurfaceReport& r, const std::string& name)
     j["closed"] = r.closed;
     j["manifold"] = r.manifold;
     j["components"] = r.components;
+    j["cavities"] = r.cavities;
     j["genus"] = r.genus;
     j["euler"] = r.euler;
     j["holes"] = r.holes;

@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/surface/nesting.h"
+
 namespace zomeify {
 
 namespace {
@@ -255,13 +257,26 @@ TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<st
     for (uint32_t f = 0; f < nf; ++f)
     {
         const uint32_t c = component[f];
-        const bool reverse = orientable[c] && (flip[f] != (volume[c] < 0));
-        if (reverse)
+        if (orientable[c] && (flip[f] != (volume[c] < 0)))
         {
             std::swap(triangles[f][1], triangles[f][2]);
             info.flipped[f] = 1;
         }
     }
+
+    // A closed shell inside an odd number of others bounds a cavity: it faces inward.
+    std::vector<uint8_t> closed(info.components, 0);
+    for (size_t c = 0; c < info.components; ++c)
+        closed[c] = orientable[c] && loops[c] == 0;
+    const std::vector<uint32_t> depth = nesting_depths(positions, triangles, component, closed);
+    for (size_t c = 0; c < info.components; ++c)
+        info.cavities += depth[c] % 2;
+    for (uint32_t f = 0; f < nf; ++f)
+        if (depth[component[f]] % 2)
+        {
+            std::swap(triangles[f][1], triangles[f][2]);
+            info.flipped[f] ^= 1;
+        }
     return info;
 }
 

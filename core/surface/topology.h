@@ -14,7 +14,8 @@ namespace zomeify {
 
 struct TopologyOptions
 {
-    //! Reorient faces: consistently per component, then outward (positive signed volume).
+    //! Reorient faces: consistently per component, then outward (positive signed volume), and
+    //! inward for shells nested inside an odd number of others (cavities).
     bool orient = true;
 };
 
@@ -28,6 +29,7 @@ struct TopologyInfo
     size_t non_manifold_vertices = 0;
     size_t components = 0;
     size_t non_orientable_components = 0;
+    size_t cavities = 0; //!< closed components inside an odd number of others, oriented inward
     long long euler = 0;
     long long genus = 0;
     std::vector<uint8_t> flipped; //!< per triangle: 1 if orient reversed it (already applied)

@@ -178,6 +178,29 @@ TEST(SurfacePrepare, SeparateClosedComponentsAreAllowed)
     EXPECT_NEAR(signed_volume(p.mesh), 2.0, 1e-12);
 }
 
+TEST(SurfacePrepare, NestedShellsBoundCavities)
+{
+    // Cubes of side 5, 3 and 1 around one centre: the middle one is a cavity (faces inward), the
+    // innermost is a solid island inside it (faces outward), whatever orientation they came with.
+    const auto cube = [](double side)
+    {
+        PolygonSoup c = cube_quads(Vec3::Constant(-0.5));
+        for (Vec3& p : c.positions)
+            p *= side;
+        return c;
+    };
+    const PreparedSurface p = prepare_surface(merge(merge(cube(5), cube(3)), cube(1)));
+    EXPECT_EQ(p.report.components, 3u);
+    EXPECT_EQ(p.report.cavities, 1u);
+    EXPECT_EQ(p.report.flipped_faces, 12u); // the middle cube's 12 triangles
+    EXPECT_NEAR(signed_volume(p.mesh), 125.0 - 27.0 + 1.0, 1e-9);
+    EXPECT_TRUE(mentions(p.report.repairs, "(cavities inward)"));
+
+    const PreparedSurface q = prepare_surface(merge(reversed(cube(5)), reversed(cube(3))));
+    EXPECT_EQ(q.report.flipped_faces, 12u); // only the outer cube
+    EXPECT_NEAR(signed_volume(q.mesh), 125.0 - 27.0, 1e-9);
+}
+
 TEST(SurfacePrepare, TorusOfQuadsHasGenusOne)
 {
     // A coarse 8 x 6 quad torus built here, to check genus without the shared data.
