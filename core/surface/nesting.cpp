@@ -31,7 +31,11 @@ std::vector<uint32_t> nesting_depths(const std::vector<Vec3>& positions,
     size_t closed_count = 0;
     for (const uint8_t c : closed)
         closed_count += c;
-    if (closed_count < 2)
+    // Pairs of components and triangles per pair bound the work; hostile files with very many
+    // shells get no cavity detection rather than a quadratic hang.
+    constexpr size_t max_components = 1000;
+    constexpr size_t max_solid_angles = 50'000'000;
+    if (closed_count < 2 || closed_count > max_components)
         return depth;
 
     // Per component: bounding box, one vertex (the query point) and its triangles.
@@ -53,6 +57,7 @@ std::vector<uint32_t> nesting_depths(const std::vector<Vec3>& positions,
             hi[c] = hi[c].cwiseMax(positions[v]);
         }
     }
+    size_t work = 0;
     for (size_t c = 0; c < nc; ++c)
     {
         if (!closed[c])
@@ -62,6 +67,9 @@ std::vector<uint32_t> nesting_depths(const std::vector<Vec3>& positions,
         {
             if (d == c || !closed[d] || (p.array() < lo[d].array()).any() || (p.array() > hi[d].array()).any())
                 continue;
+            work += faces[d].size();
+            if (work > max_solid_angles)
+                return std::vector<uint32_t>(nc, 0);
             // The winding number of a closed surface is +-1 inside and 0 outside; 0.5 splits them.
             double omega = 0;
             for (const uint32_t f : faces[d])

@@ -26,7 +26,8 @@ bool in_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c)
 }
 
 // Ear clipping on a counter-clockwise simple polygon. False if no ear is found (the polygon is
-// not simple), in which case `out` is left as it was.
+// not simple) or the work exceeds 4 n^2 point tests (a hostile polygon could otherwise cost n^3),
+// in which case `out` is left as it was.
 bool ear_clip(std::span<const uint32_t> polygon, const std::vector<Vec2>& pts,
               std::vector<std::array<uint32_t, 3>>& out)
 {
@@ -34,6 +35,7 @@ bool ear_clip(std::span<const uint32_t> polygon, const std::vector<Vec2>& pts,
     for (size_t i = 0; i < ring.size(); ++i)
         ring[i] = i;
     std::vector<std::array<uint32_t, 3>> triangles;
+    size_t budget = 4 * polygon.size() * polygon.size();
     while (ring.size() > 3)
     {
         const size_t n = ring.size();
@@ -50,6 +52,8 @@ bool ear_clip(std::span<const uint32_t> polygon, const std::vector<Vec2>& pts,
                 const size_t k = ring[j];
                 if (k == ia || k == ib || k == ic)
                     continue;
+                if (budget-- == 0)
+                    return false;
                 empty = !in_triangle(pts[k], a, b, c);
             }
             if (!empty)
