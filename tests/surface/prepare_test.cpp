@@ -75,29 +75,33 @@ TEST(SurfacePrepare, NonConvexPolygonIsEarClipped)
     }
 }
 
-TEST(SurfacePrepare, TriangulateKeepsAreaOfStar)
+TEST(SurfacePrepare, TriangulateKeepsAreaOfStars)
 {
-    // A five-pointed star (non-convex decagon) in the plane z = 0.
-    std::vector<Vec3> positions;
-    std::vector<uint32_t> polygon;
-    for (int i = 0; i < 10; ++i)
+    // Stars (non-convex 2k-gons) in the plane z = 0, up to the ear-clipping size limit.
+    for (const int points : {5, 64, 128})
     {
-        const double r = i % 2 ? 0.4 : 1.0;
-        const double a = 2 * 3.14159265358979 * i / 10;
-        positions.push_back(Vec3(r * std::cos(a), r * std::sin(a), 0));
-        polygon.push_back(static_cast<uint32_t>(i));
+        SCOPED_TRACE(points);
+        std::vector<Vec3> positions;
+        std::vector<uint32_t> polygon;
+        for (int i = 0; i < 2 * points; ++i)
+        {
+            const double r = i % 2 ? 0.4 : 1.0;
+            const double a = 3.14159265358979 * i / points;
+            positions.push_back(Vec3(r * std::cos(a), r * std::sin(a), 0));
+            polygon.push_back(static_cast<uint32_t>(i));
+        }
+        std::vector<std::array<uint32_t, 3>> triangles;
+        triangulate_polygon(positions, polygon, triangles);
+        ASSERT_EQ(triangles.size(), 2u * points - 2);
+        double area = 0;
+        for (const auto& t : triangles)
+        {
+            const double z = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).z();
+            EXPECT_GT(z, 0);
+            area += z / 2;
+        }
+        EXPECT_NEAR(area, 2 * points * 0.5 * 1.0 * 0.4 * std::sin(3.14159265358979 / points), 1e-12);
     }
-    std::vector<std::array<uint32_t, 3>> triangles;
-    triangulate_polygon(positions, polygon, triangles);
-    ASSERT_EQ(triangles.size(), 8u);
-    double area = 0;
-    for (const auto& t : triangles)
-    {
-        const double z = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).z();
-        EXPECT_GT(z, 0);
-        area += z / 2;
-    }
-    EXPECT_NEAR(area, 10 * 0.5 * 1.0 * 0.4 * std::sin(2 * 3.14159265358979 / 10), 1e-12);
 }
 
 TEST(SurfacePrepare, DuplicateVerticesAreWelded)
