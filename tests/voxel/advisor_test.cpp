@@ -29,6 +29,9 @@ TEST(VoxelAdvisor, GenusKeptAtTheAdvisedResolutionForEverySharedMesh)
         EXPECT_EQ(z0.report.topology.genus, s.genus);
         EXPECT_EQ(model_genus(z0.model), s.genus);
         EXPECT_EQ(closed_manifold_problem(z0.model), "");
+        long long halfedge_genus = -1;
+        EXPECT_EQ(halfedge_problem(z0.model, &halfedge_genus), "");
+        EXPECT_EQ(halfedge_genus, s.genus);
         EXPECT_EQ(lattice_problem(z0.model), "");
         std::cout << name << ": genus " << s.genus << " kept from " << advice.resolution << " cells ("
                   << advice.trials.size() << " resolutions scanned in " << advice.seconds << " s)\n";

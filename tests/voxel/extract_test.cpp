@@ -76,6 +76,7 @@ TEST(VoxelExtract, BlockAndRing)
     const Extraction ring = extract_boundary(grid_with(
         {{1, 1, 1}, {2, 1, 1}, {3, 1, 1}, {1, 2, 1}, {3, 2, 1}, {1, 3, 1}, {2, 3, 1}, {3, 3, 1}}));
     EXPECT_EQ(ring.topology.genus, 1);
+    EXPECT_EQ(halfedge_problem(ring.model), "");
     EXPECT_EQ(closed_manifold_problem(ring.model), "");
     EXPECT_EQ(lattice_problem(ring.model), "");
     EXPECT_NEAR(signed_volume6(ring.model), 6.0 * 8 * kPhi * kPhi * kPhi, 1e-9);

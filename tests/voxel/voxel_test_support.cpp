@@ -8,6 +8,8 @@
 #include <sstream>
 #include <unordered_set>
 
+#include "core/mesh/model_convert.h"
+#include "core/mesh/validate.h"
 #include "core/surface/prepare.h"
 #include "core/surface/read_mesh.h"
 #include "core/zome/slots.h"
@@ -130,6 +132,21 @@ std::string lattice_problem(const ZomeModel& model)
             return "a B1 strut is not along a coordinate axis";
     }
     return {};
+}
+
+std::string halfedge_problem(const ZomeModel& model, long long* genus)
+{
+    try
+    {
+        const ValidationReport report = validate(from_model(model));
+        if (genus)
+            *genus = report.genus;
+        return report.ok() ? std::string() : report.message();
+    }
+    catch (const std::exception& e)
+    {
+        return e.what();
+    }
 }
 
 long long model_genus(const ZomeModel& model)

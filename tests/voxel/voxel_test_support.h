@@ -42,6 +42,10 @@ std::string closed_manifold_problem(const ZomeModel& model);
 //! An empty string if every strut is a B1 along a coordinate axis and no two nodes coincide.
 std::string lattice_problem(const ZomeModel& model);
 
+//! An empty string if from_model() accepts the model and validate() finds the halfedge mesh valid
+//! (closed 2-manifold, Zome rules); otherwise the reason. `genus` receives validate()'s genus.
+std::string halfedge_problem(const ZomeModel& model, long long* genus = nullptr);
+
 //! Genus from the faces: components − (V − E + F)/2.
 long long model_genus(const ZomeModel& model);
 

@@ -39,6 +39,9 @@ TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
             EXPECT_EQ(closed_manifold_problem(z0.model), "");
             EXPECT_EQ(lattice_problem(z0.model), "");
             EXPECT_EQ(model_genus(z0.model), z0.report.topology.genus);
+            long long halfedge_genus = -1;
+            EXPECT_EQ(halfedge_problem(z0.model, &halfedge_genus), "");
+            EXPECT_EQ(halfedge_genus, z0.report.topology.genus);
             EXPECT_EQ(z0.report.topology.components, 1);
             const long long g = z0.report.topology.genus;
             table << " " << (g == s.genus ? "kept" : "**lost**") << " (g " << g << "), " << z0.model.nodes.size()
