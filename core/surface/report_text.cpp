@@ -18,6 +18,11 @@ double diagonal(const SurfaceReport& r)
     return std::sqrt(s);
 }
 
+std::string count(size_t n, const std::string& noun)
+{
+    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
+}
+
 std::string triple(const std::array<double, 3>& v)
 {
     std::ostringstream os;
@@ -38,8 +43,8 @@ std::string surface_report_table(const SurfaceReport& r, const std::string& name
     row("vertices", std::to_string(r.vertices));
     row("faces", std::to_string(r.faces) + " triangles");
     row("edges", std::to_string(r.edges));
-    row("closed", yes_no(r.closed) + (r.closed ? "" : " (" + std::to_string(r.holes) + " holes, " +
-                                                           std::to_string(r.boundary_edges) + " boundary edges)"));
+    row("closed", yes_no(r.closed) + (r.closed ? "" : " (" + count(r.holes, "hole") + ", " +
+                                                           count(r.boundary_edges, "boundary edge") + ")"));
     row("manifold", yes_no(r.manifold));
     row("components", std::to_string(r.components) +
                           (r.cavities ? " (" + std::to_string(r.cavities) + " of them cavities)" : ""));

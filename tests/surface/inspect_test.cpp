@@ -48,7 +48,7 @@ TEST(InspectReport, ProblemsInTable)
     PolygonSoup box = cube_quads();
     box.polygons.pop_back();
     const std::string table = surface_report_table(diagnose(box), "box.obj");
-    EXPECT_NE(table.find("closed          no (1 holes, 4 boundary edges)"), std::string::npos) << table;
+    EXPECT_NE(table.find("closed          no (1 hole, 4 boundary edges)"), std::string::npos) << table;
     EXPECT_NE(table.find("problems        mesh is not closed"), std::string::npos) << table;
 }
 
