@@ -1,6 +1,7 @@
 // zomeify run MESH -o OUT [...] (design.md §5). The annealing stages are not built yet, so only
 // `--initial-only` runs: it writes the initial model Z0 (paper §3.1) and says whether Z0 kept the
 // genus of the surface, with the resolution advisor's hint when it did not.
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -16,6 +17,8 @@
 #include "core/geom/closest_point.h"
 #include "core/geom/inside.h"
 #include "core/io/model_io.h"
+#include "core/mesh/model_convert.h"
+#include "core/mesh/validate.h"
 #include "core/surface/prepare.h"
 #include "core/surface/read_mesh.h"
 #include "core/voxel/advisor.h"
@@ -104,6 +107,11 @@ int cmd_run(const CommandArgs& argv)
         throw InvalidInputError(msg.str());
     }
 
+    // The annealer's gate: Z0 must become a valid halfedge Zome mesh (closed, 2-manifold, Zome rules).
+    const ValidationReport check = validate(from_model(z0.model));
+    if (!check.ok())
+        throw InvalidInputError("internal error: Z0 failed validation: " + check.message());
+
     // The resolution the user effectively chose: with --b1, the cells along the longest side.
     const auto [lo, hi] = bounding_box(surface.mesh);
     const int resolution = args.has("--b1")
@@ -113,10 +121,23 @@ int cmd_run(const CommandArgs& argv)
     std::string advice;
     if (r.topology.genus != surface_genus)
     {
+        // The user wants about this much detail, so look first for the nearest finer grid that
+        // keeps the genus (the smallest one overall may be a useless blob for a genus-0 shape), and
+        // only then below their choice.
         AdvisorOptions advisor;
         advisor.seconds = 10.0;
-        advice = advice_message(resolution, r.topology.genus,
-                                advise_resolution(surface.mesh, surface_genus, is_inside, advisor));
+        advisor.min_resolution = resolution + 1;
+        advisor.max_resolution = std::max(64, 2 * resolution);
+        AdvisorResult found = advise_resolution(surface.mesh, surface_genus, is_inside, advisor);
+        if (!found.found && resolution > 4)
+        {
+            advisor.min_resolution = 4;
+            advisor.max_resolution = resolution - 1;
+            const AdvisorResult below = advise_resolution(surface.mesh, surface_genus, is_inside, advisor);
+            if (below.found)
+                found = below;
+        }
+        advice = advice_message(resolution, r.topology.genus, found);
     }
 
     const double seconds = clock.seconds();
