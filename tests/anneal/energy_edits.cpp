@@ -13,10 +13,11 @@ namespace {
 template <class H>
 H random_element(const ZomeMesh& mesh, size_t size, EditRng& rng)
 {
-    std::uniform_int_distribution<MeshIndex> pick(0, static_cast<MeshIndex>(size - 1));
+    // rng() % size rather than a std distribution: the same sequence with libstdc++ and libc++,
+    // so native and wasm runs draw the same edits.
     for (int tries = 0; tries < 64; ++tries)
     {
-        const H h(pick(rng));
+        const H h(static_cast<MeshIndex>(rng() % size));
         if (!mesh.is_deleted(h))
         {
             return h;
