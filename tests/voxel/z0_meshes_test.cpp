@@ -1,7 +1,9 @@
 // Acceptance over the ten shared meshes (issue 4): at 8, 12, 16 and 24 cells along the longest
 // side, Z0 is a closed 2-manifold of B1 struts along the axes with no two nodes at one position.
-// The genus of Z0 against the genus of S is recorded (printed as the README's Markdown table).
+// The genus of Z0 against the genus of S is recorded (printed as the README's Markdown table, with
+// the CPU time of each build).
 
+#include <ctime>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -34,7 +36,10 @@ TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
             SCOPED_TRACE(name + " at " + std::to_string(n) + " cells");
             InitialModelOptions options;
             options.resolution = n;
+            // CPU time, not wall time: the table should not depend on what else the machine runs.
+            const std::clock_t start = std::clock();
             const InitialModel z0 = build_initial_model(s.mesh, s.predicate(), options);
+            const double cpu_ms = 1000.0 * static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
             EXPECT_TRUE(z0.report.valid);
             EXPECT_EQ(closed_manifold_problem(z0.model), "");
             EXPECT_EQ(lattice_problem(z0.model), "");
@@ -45,7 +50,7 @@ TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
             EXPECT_EQ(z0.report.topology.components, 1);
             const long long g = z0.report.topology.genus;
             table << " " << (g == s.genus ? "kept" : "**lost**") << " (g " << g << "), " << z0.model.nodes.size()
-                  << " nodes, " << std::fixed << std::setprecision(1) << 1000.0 * z0.report.seconds << " ms";
+                  << " nodes, " << std::fixed << std::setprecision(1) << cpu_ms << " ms";
             if (z0.report.attempts > 1)
                 table << ", " << z0.report.attempts - 1 << " nudge" << (z0.report.attempts > 2 ? "s" : "");
             table << " |";
