@@ -24,21 +24,23 @@
 #include "core/voxel/advisor.h"
 #include "core/voxel/initial_model.h"
 
-namespace zomeify::cli {
+namespace zomeify::cli
+{
 
-namespace {
+namespace
+{
 
 constexpr int kDefaultResolution = 16;
 
-std::string file_name(const std::string& path)
+std::string file_name(const std::string &path)
 {
     const size_t slash = path.find_last_of("/\\");
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-nlohmann::json stats_json(const InitialModel& z0, long long surface_genus, int resolution, double seconds)
+nlohmann::json stats_json(const InitialModel &z0, long long surface_genus, int resolution, double seconds)
 {
-    const InitialModelReport& r = z0.report;
+    const InitialModelReport &r = z0.report;
     nlohmann::json j;
     j["stage"] = "initial";
     j["wall_seconds"] = seconds;
@@ -67,9 +69,10 @@ nlohmann::json stats_json(const InitialModel& z0, long long surface_genus, int r
 
 } // namespace
 
-int cmd_run(const CommandArgs& argv)
+int cmd_run(const CommandArgs &argv)
 {
-    const Args args(argv, {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--threads", "--seed", "--stats"},
+    const Args args(argv,
+                    {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--threads", "--seed", "--stats"},
                     {"--initial-only"});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT --initial-only");
     if (!args.has("--initial-only"))
@@ -84,7 +87,7 @@ int cmd_run(const CommandArgs& argv)
         throw InvalidInputError("give --resolution or --b1, not both");
 
     Stopwatch clock;
-    const std::string& path = args.positional()[0];
+    const std::string &path = args.positional()[0];
     PreparedSurface surface = prepare_surface(read_mesh_file(path));
     const long long surface_genus = surface.report.genus;
 
@@ -96,14 +99,14 @@ int cmd_run(const CommandArgs& argv)
 
     const SurfaceProjector projector(surface.mesh);
     const InsideTest inside(projector);
-    const InsidePredicate is_inside = [&](const Vec3& p) { return inside.is_inside(p); };
+    const InsidePredicate is_inside = [&](const Vec3 &p) { return inside.is_inside(p); };
     InitialModel z0 = build_initial_model(surface.mesh, is_inside, options);
-    const InitialModelReport& r = z0.report;
+    const InitialModelReport &r = z0.report;
     if (!r.valid)
     {
         std::ostringstream msg;
-        msg << "could not make the voxel boundary a 2-manifold after " << r.attempts
-            << " grids (" << r.repair.remaining_bad_vertices << " non-manifold vertices left); try another resolution";
+        msg << "could not make the voxel boundary a 2-manifold after " << r.attempts << " grids ("
+            << r.repair.remaining_bad_vertices << " non-manifold vertices left); try another resolution";
         throw InvalidInputError(msg.str());
     }
 
@@ -114,9 +117,8 @@ int cmd_run(const CommandArgs& argv)
 
     // The resolution the user effectively chose: with --b1, the cells along the longest side.
     const auto [lo, hi] = bounding_box(surface.mesh);
-    const int resolution = args.has("--b1")
-                               ? static_cast<int>(std::lround((hi - lo).maxCoeff() / r.grid.cell))
-                               : options.resolution;
+    const int resolution =
+        args.has("--b1") ? static_cast<int>(std::lround((hi - lo).maxCoeff() / r.grid.cell)) : options.resolution;
 
     std::string advice;
     if (r.topology.genus != surface_genus)
@@ -143,7 +145,7 @@ int cmd_run(const CommandArgs& argv)
     const double seconds = clock.seconds();
     const nlohmann::json stats = stats_json(z0, surface_genus, resolution, seconds);
     z0.model.stats_json = stats.dump();
-    for (const std::string& out : outputs)
+    for (const std::string &out : outputs)
         write_model_file(out, z0.model);
     if (const auto stats_path = args.value("--stats"))
     {
@@ -156,15 +158,15 @@ int cmd_run(const CommandArgs& argv)
     std::ostringstream s;
     s << std::setprecision(4);
     s << "Z0 of " << file_name(path) << " at " << resolution << " cells along the longest side (b1 = " << r.grid.cell
-      << " mesh units, grid " << r.grid.dims[0] << "x" << r.grid.dims[1] << "x" << r.grid.dims[2] << "): "
-      << z0.model.nodes.size() << " balls, " << z0.model.struts.size() << " B1 struts, " << z0.model.faces.size()
-      << " quads from " << r.voxels << " voxels; genus " << r.topology.genus << " against the surface's "
-      << surface_genus << (r.topology.genus == surface_genus ? " (kept)" : " (NOT kept)") << ". Cleanup removed "
-      << r.repair.removed << " and added " << r.repair.added << " simple voxels";
+      << " mesh units, grid " << r.grid.dims[0] << "x" << r.grid.dims[1] << "x" << r.grid.dims[2]
+      << "): " << z0.model.nodes.size() << " balls, " << z0.model.struts.size() << " B1 struts, "
+      << z0.model.faces.size() << " quads from " << r.voxels << " voxels; genus " << r.topology.genus
+      << " against the surface's " << surface_genus << (r.topology.genus == surface_genus ? " (kept)" : " (NOT kept)")
+      << ". Cleanup removed " << r.repair.removed << " and added " << r.repair.added << " simple voxels";
     if (r.attempts > 1)
         s << " after " << r.attempts - 1 << " nudged grid" << (r.attempts > 2 ? "s" : "");
     s << "; " << std::setprecision(3) << seconds << " s. Wrote";
-    for (const std::string& out : outputs)
+    for (const std::string &out : outputs)
         s << " " << out;
     s << ".";
     if (!advice.empty())

@@ -5,10 +5,11 @@
 
 #include "core/base/stopwatch.h"
 
-namespace zomeify {
+namespace zomeify
+{
 
-AdvisorResult advise_resolution(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
-                                const AdvisorOptions& options)
+AdvisorResult advise_resolution(const TriangleMesh &surface, long long surface_genus, const InsidePredicate &inside,
+                                const AdvisorOptions &options)
 {
     Stopwatch clock;
     AdvisorResult result;
@@ -33,7 +34,8 @@ AdvisorResult advise_resolution(const TriangleMesh& surface, long long surface_g
     return result;
 }
 
-namespace {
+namespace
+{
 
 std::string handles(long long n)
 {
@@ -42,7 +44,7 @@ std::string handles(long long n)
 
 } // namespace
 
-std::string advice_message(int resolution, long long genus, const AdvisorResult& advice)
+std::string advice_message(int resolution, long long genus, const AdvisorResult &advice)
 {
     std::ostringstream os;
     const long long want = advice.surface_genus;
@@ -68,8 +70,7 @@ std::string advice_message(int resolution, long long genus, const AdvisorResult&
     }
     else if (!advice.trials.empty())
     {
-        os << "; no resolution up to " << advice.trials.back().resolution << " keeps the genus (genus "
-           << want << ")";
+        os << "; no resolution up to " << advice.trials.back().resolution << " keeps the genus (genus " << want << ")";
     }
     return os.str();
 }

@@ -10,7 +10,8 @@
 
 #include "core/voxel/initial_model.h"
 
-namespace zomeify {
+namespace zomeify
+{
 
 struct AdvisorOptions
 {
@@ -32,18 +33,18 @@ struct ResolutionTrial
 struct AdvisorResult
 {
     bool found = false;
-    int resolution = 0;            //!< the smallest resolution keeping the genus (when found)
+    int resolution = 0; //!< the smallest resolution keeping the genus (when found)
     long long surface_genus = 0;
     std::vector<ResolutionTrial> trials;
     double seconds = 0.0;
 };
 
 //! Scans resolutions min..max and stops at the first whose Z0 is valid with genus `surface_genus`.
-AdvisorResult advise_resolution(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
-                                const AdvisorOptions& options = {});
+AdvisorResult advise_resolution(const TriangleMesh &surface, long long surface_genus, const InsidePredicate &inside,
+                                const AdvisorOptions &options = {});
 
 //! A one-line explanation for a user whose choice gave Z0 the genus `genus` instead of the
 //! surface's, e.g. "at 10 cells the 4 handles of this shape close up; 14 keeps them".
-std::string advice_message(int resolution, long long genus, const AdvisorResult& advice);
+std::string advice_message(int resolution, long long genus, const AdvisorResult &advice);
 
 } // namespace zomeify

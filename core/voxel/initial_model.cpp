@@ -6,9 +6,10 @@
 
 #include "core/base/stopwatch.h"
 
-namespace zomeify {
+namespace zomeify
+{
 
-GridLayoutOptions nudged_layout(const InitialModelOptions& options, int attempt)
+GridLayoutOptions nudged_layout(const InitialModelOptions &options, int attempt)
 {
     GridLayoutOptions layout;
     layout.resolution = options.resolution;
@@ -29,12 +30,12 @@ GridLayoutOptions nudged_layout(const InitialModelOptions& options, int attempt)
     return layout;
 }
 
-InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSource& source,
-                                 const InitialModelOptions& options)
+InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSource &source,
+                                 const InitialModelOptions &options)
 {
     Stopwatch clock;
     InitialModel out;
-    InitialModelReport& rep = out.report;
+    InitialModelReport &rep = out.report;
     VoxelGrid grid;
     for (int attempt = 0; attempt <= std::max(0, options.max_retries); ++attempt)
     {
@@ -61,11 +62,11 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
     return out;
 }
 
-InitialModel build_initial_model(const TriangleMesh& surface, const InsidePredicate& inside,
-                                 const InitialModelOptions& options)
+InitialModel build_initial_model(const TriangleMesh &surface, const InsidePredicate &inside,
+                                 const InitialModelOptions &options)
 {
     VoxelizeStats stats;
-    auto source = [&](const GridSpec& spec) { return voxelize(surface, spec, inside, &stats); };
+    auto source = [&](const GridSpec &spec) { return voxelize(surface, spec, inside, &stats); };
     InitialModel out = build_initial_model(bounding_box(surface), source, options);
     out.report.voxelize = stats;
     return out;

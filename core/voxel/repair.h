@@ -9,14 +9,15 @@
 
 #include "core/voxel/voxel_grid.h"
 
-namespace zomeify {
+namespace zomeify
+{
 
 //! Occupancy of the 8 cells around a grid vertex: bit dx + 2·dy + 4·dz for the cell whose corner
 //! at offset (1-dx, 1-dy, 1-dz) is the vertex, i.e. cell (vx-1+dx, vy-1+dy, vz-1+dz).
 using VertexStar = uint8_t;
 
 //! The star of grid vertex (vx, vy, vz); vertices range over 0..dims inclusive.
-VertexStar vertex_star(const VoxelGrid& grid, int vx, int vy, int vz);
+VertexStar vertex_star(const VoxelGrid &grid, int vx, int vy, int vz);
 
 //! True if the boundary of the occupied cells is a disk (or empty) near the vertex: no two
 //! occupied cells meet only along an edge there (non-manifold edge) and the occupied and the empty
@@ -24,7 +25,7 @@ VertexStar vertex_star(const VoxelGrid& grid, int vx, int vy, int vz);
 bool is_manifold_star(VertexStar star);
 
 //! Number of grid vertices whose star is not manifold.
-size_t count_nonmanifold_vertices(const VoxelGrid& grid);
+size_t count_nonmanifold_vertices(const VoxelGrid &grid);
 
 struct RepairOptions
 {
@@ -36,16 +37,16 @@ struct RepairOptions
 
 struct RepairReport
 {
-    bool manifold = false;            //!< true if no non-manifold vertex is left
-    size_t initial_bad_vertices = 0;  //!< non-manifold vertices before the cleanup
+    bool manifold = false;           //!< true if no non-manifold vertex is left
+    size_t initial_bad_vertices = 0; //!< non-manifold vertices before the cleanup
     size_t remaining_bad_vertices = 0;
-    size_t removed = 0;               //!< simple cells removed
-    size_t added = 0;                 //!< simple cells added (tagged Cell::Added)
+    size_t removed = 0; //!< simple cells removed
+    size_t added = 0;   //!< simple cells added (tagged Cell::Added)
 };
 
 //! Removes (and, if allowed, adds) simple cells incident to non-manifold vertices until none is
 //! left or no simple flip is possible there. Each cell is flipped at most once, so this ends.
-//! Cells adjacent to the grid's border are never added (the outer layer stays empty).
-RepairReport repair_manifold(VoxelGrid& grid, const RepairOptions& options = {});
+//! Cells of the grid's outer layer are never added (it stays empty).
+RepairReport repair_manifold(VoxelGrid &grid, const RepairOptions &options = {});
 
 } // namespace zomeify

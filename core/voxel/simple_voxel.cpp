@@ -3,9 +3,11 @@
 #include <array>
 #include <cstdlib>
 
-namespace zomeify {
+namespace zomeify
+{
 
-namespace {
+namespace
+{
 
 constexpr int kCentre = 13;
 
@@ -58,14 +60,14 @@ AdjacencyTables make_tables()
     return t;
 }
 
-const AdjacencyTables& tables()
+const AdjacencyTables &tables()
 {
     static const AdjacencyTables t = make_tables();
     return t;
 }
 
 // Grows the component of `seed` inside `set` along `adj`; returns its cells.
-uint32_t flood(uint32_t seed, uint32_t set, const std::array<uint32_t, 27>& adj)
+uint32_t flood(uint32_t seed, uint32_t set, const std::array<uint32_t, 27> &adj)
 {
     uint32_t comp = seed, frontier = seed;
     while (frontier)
@@ -82,7 +84,7 @@ uint32_t flood(uint32_t seed, uint32_t set, const std::array<uint32_t, 27>& adj)
 
 } // namespace
 
-Neighbourhood neighbourhood(const VoxelGrid& grid, int i, int j, int k)
+Neighbourhood neighbourhood(const VoxelGrid &grid, int i, int j, int k)
 {
     Neighbourhood n = 0;
     int bit = 0;
@@ -96,7 +98,7 @@ Neighbourhood neighbourhood(const VoxelGrid& grid, int i, int j, int k)
 
 int object_components(Neighbourhood n)
 {
-    const auto& t = tables();
+    const auto &t = tables();
     uint32_t rest = n & t.n26;
     int count = 0;
     while (rest)
@@ -109,7 +111,7 @@ int object_components(Neighbourhood n)
 
 int background_components(Neighbourhood n)
 {
-    const auto& t = tables();
+    const auto &t = tables();
     const uint32_t background = ~n & t.n18;
     uint32_t seeds = background & t.n6;
     int count = 0;

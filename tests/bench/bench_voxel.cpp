@@ -21,7 +21,7 @@
 
 using namespace zomeify;
 
-int main(int argc, char** argv)
+int main(int argc, char **argv)
 {
     constexpr int kRuns = 5;
     const std::string mesh_name = argc > 1 ? argv[1] : "rockerarm.obj";
@@ -32,7 +32,7 @@ int main(int argc, char** argv)
     const SurfaceProjector projector(mesh);
     const InsideTest inside(projector);
     const double setup = setup_clock.seconds();
-    const InsidePredicate is_inside = [&](const Vec3& p) { return inside.is_inside(p); };
+    const InsidePredicate is_inside = [&](const Vec3 &p) { return inside.is_inside(p); };
 
     InitialModelOptions options;
     options.resolution = resolution;
@@ -44,10 +44,12 @@ int main(int argc, char** argv)
     VoxelGrid grid;
     const double t_voxelize = bench::median_seconds(kRuns, [&] { grid = voxelize(mesh, spec, is_inside); });
     VoxelGrid cleaned;
-    const double t_repair = bench::median_seconds(kRuns, [&] {
-        cleaned = grid;
-        repair_manifold(cleaned);
-    });
+    const double t_repair = bench::median_seconds(kRuns,
+                                                  [&]
+                                                  {
+                                                      cleaned = grid;
+                                                      repair_manifold(cleaned);
+                                                  });
     const double t_extract = bench::median_seconds(kRuns, [&] { extract_boundary(cleaned); });
 
     nlohmann::json j;

@@ -11,10 +11,10 @@ using namespace zomeify::voxel_test;
 
 TEST(VoxelAdvisor, GenusKeptAtTheAdvisedResolutionForEverySharedMesh)
 {
-    for (const auto& name : shared_mesh_names())
+    for (const auto &name : shared_mesh_names())
     {
         SCOPED_TRACE(name);
-        const LoadedSurface& s = shared_surface(name);
+        const LoadedSurface &s = shared_surface(name);
         const AdvisorResult advice = advise_resolution(s.mesh, s.genus, s.predicate());
         ASSERT_TRUE(advice.found);
         ASSERT_FALSE(advice.trials.empty());

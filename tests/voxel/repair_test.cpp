@@ -10,7 +10,8 @@
 using namespace zomeify;
 using namespace zomeify::voxel_test;
 
-namespace {
+namespace
+{
 
 GridSpec spec(int n)
 {
@@ -20,13 +21,13 @@ GridSpec spec(int n)
     return s;
 }
 
-void fill(VoxelGrid& g, std::initializer_list<std::array<int, 3>> cells)
+void fill(VoxelGrid &g, std::initializer_list<std::array<int, 3>> cells)
 {
-    for (const auto& c : cells)
+    for (const auto &c : cells)
         g.set(c[0], c[1], c[2], Cell::Surface);
 }
 
-void block(VoxelGrid& g, int lo, int hi)
+void block(VoxelGrid &g, int lo, int hi)
 {
     for (int k = lo; k < hi; ++k)
         for (int j = lo; j < hi; ++j)
@@ -38,7 +39,7 @@ void block(VoxelGrid& g, int lo, int hi)
 // (3,3,3) meet only at grid vertex (3,3,3). Both are non-simple (removing either cuts the ring).
 // With `closed_by_faces`, (2,3,3) and (2,3,2) make that link a path of faces instead, around the
 // same hole.
-VoxelGrid corner_ring(const GridSpec& s, bool closed_by_faces)
+VoxelGrid corner_ring(const GridSpec &s, bool closed_by_faces)
 {
     VoxelGrid g(s);
     fill(g, {{2, 2, 2}, {2, 2, 1}, {3, 2, 1}, {4, 2, 1}, {4, 2, 2}, {4, 2, 3}, {4, 3, 3}, {3, 3, 3}});
@@ -53,12 +54,12 @@ TEST(VoxelRepair, ManifoldStars)
 {
     EXPECT_TRUE(is_manifold_star(0));
     EXPECT_TRUE(is_manifold_star(0xFF));
-    EXPECT_TRUE(is_manifold_star(0x01));         // one cell
-    EXPECT_TRUE(is_manifold_star(0x03));         // two cells sharing a face
-    EXPECT_FALSE(is_manifold_star(0x01 | 0x80)); // two cells sharing only the vertex
-    EXPECT_FALSE(is_manifold_star(0x01 | 0x08)); // two cells sharing only an edge
+    EXPECT_TRUE(is_manifold_star(0x01));          // one cell
+    EXPECT_TRUE(is_manifold_star(0x03));          // two cells sharing a face
+    EXPECT_FALSE(is_manifold_star(0x01 | 0x80));  // two cells sharing only the vertex
+    EXPECT_FALSE(is_manifold_star(0x01 | 0x08));  // two cells sharing only an edge
     EXPECT_FALSE(is_manifold_star(0xFF & ~0x81)); // two opposite empty cells
-    EXPECT_TRUE(is_manifold_star(0x0F));         // a half-space
+    EXPECT_TRUE(is_manifold_star(0x0F));          // a half-space
 }
 
 // Figure 3(a): a non-manifold vertex, resolved by removing a simple cell. A 2×2×2 block with one
@@ -91,7 +92,7 @@ TEST(VoxelRepair, Figure3bNonSimpleVoxelLeftAlone)
     fill(g, {{4, 4, 4}});
     const RepairReport r = repair_manifold(g);
     EXPECT_TRUE(r.manifold);
-    EXPECT_TRUE(g.occupied(3, 3, 3)); // the red cell of Figure 3(b)
+    EXPECT_TRUE(g.occupied(3, 3, 3));  // the red cell of Figure 3(b)
     EXPECT_FALSE(g.occupied(4, 4, 4)); // the green one
     EXPECT_EQ(r.removed, 1u);
 }
@@ -130,7 +131,8 @@ TEST(VoxelRepair, StuckGridIsNudgedAndRetried)
     options.repair.allow_additions = false;
     const std::array<Vec3, 2> box{Vec3(0, 0, 0), Vec3(5, 5, 5)};
     std::vector<GridSpec> asked;
-    auto source = [&](const GridSpec& s) {
+    auto source = [&](const GridSpec &s)
+    {
         asked.push_back(s);
         return corner_ring(s, asked.size() > 1);
     };
@@ -140,14 +142,15 @@ TEST(VoxelRepair, StuckGridIsNudgedAndRetried)
     ASSERT_EQ(z0.report.notes.size(), 1u);
     EXPECT_NE(z0.report.notes[0].find("non-manifold"), std::string::npos);
     ASSERT_EQ(asked.size(), 2u);
-    EXPECT_NE(asked[0].cell, asked[1].cell); // the nudge changed the scale ...
+    EXPECT_NE(asked[0].cell, asked[1].cell);     // the nudge changed the scale ...
     EXPECT_NE(asked[0].origin, asked[1].origin); // ... and the offset
     EXPECT_EQ(z0.report.topology.genus, 1);
     EXPECT_EQ(closed_manifold_problem(z0.model), "");
 
     // A source that never becomes manifold: every retry is used, then the result says so.
     asked.clear();
-    auto always_stuck = [&](const GridSpec& s) {
+    auto always_stuck = [&](const GridSpec &s)
+    {
         asked.push_back(s);
         return corner_ring(s, false);
     };

@@ -9,7 +9,8 @@
 
 using namespace zomeify;
 
-namespace {
+namespace
+{
 
 constexpr int bit(int dx, int dy, int dz)
 {
@@ -19,7 +20,7 @@ constexpr int bit(int dx, int dy, int dz)
 Neighbourhood with(std::initializer_list<std::array<int, 3>> cells)
 {
     Neighbourhood n = 0;
-    for (const auto& c : cells)
+    for (const auto &c : cells)
         n |= 1u << bit(c[0], c[1], c[2]);
     return n;
 }

@@ -27,9 +27,9 @@ TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
     for (size_t i = 0; i < std::size(resolutions); ++i)
         table << "---|";
     table << "\n";
-    for (const auto& name : shared_mesh_names())
+    for (const auto &name : shared_mesh_names())
     {
-        const LoadedSurface& s = shared_surface(name);
+        const LoadedSurface &s = shared_surface(name);
         table << "| " << name << " | " << s.genus << " |";
         for (int n : resolutions)
         {
