@@ -60,6 +60,8 @@ nlohmann::json stats_json(const InitialModel &z0, long long surface_genus, int r
     j["grid"] = r.grid.dims;
     j["voxels"] = r.voxels;
     j["grid_attempts"] = r.attempts;
+    j["grid_used"] = r.attempt_used;
+    j["cell_scale_factor"] = r.layout.scale_factor;
     j["cleanup_removed"] = r.repair.removed;
     j["cleanup_added"] = r.repair.added;
     j["cavity_cells_filled"] = r.voxelize.cavity_cells;
@@ -92,6 +94,8 @@ int cmd_run(const CommandArgs &argv)
     const long long surface_genus = surface.report.genus;
 
     InitialModelOptions options;
+    // A grid a few percent off (a nudge) often keeps a handle the exact grid closes or bridges.
+    options.target_genus = surface_genus;
     options.resolution = static_cast<int>(args.integer("--resolution", kDefaultResolution, 1, 1024));
     options.b1 = args.number("--b1", 0.0, 0.0, 1e300);
     if (args.has("--b1") && !(options.b1 > 0.0))
@@ -163,8 +167,10 @@ int cmd_run(const CommandArgs &argv)
       << z0.model.faces.size() << " quads from " << r.voxels << " voxels; genus " << r.topology.genus
       << " against the surface's " << surface_genus << (r.topology.genus == surface_genus ? " (kept)" : " (NOT kept)")
       << ". Cleanup removed " << r.repair.removed << " and added " << r.repair.added << " simple voxels";
+    if (r.attempt_used > 0)
+        s << "; nudged grid " << r.attempt_used << " (cell x" << r.layout.scale_factor << ") used";
     if (r.attempts > 1)
-        s << " after " << r.attempts - 1 << " nudged grid" << (r.attempts > 2 ? "s" : "");
+        s << "; " << r.attempts << " grids tried";
     s << "; " << std::setprecision(3) << seconds << " s. Wrote";
     for (const std::string &out : outputs)
         s << " " << out;

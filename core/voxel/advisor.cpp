@@ -16,6 +16,7 @@ AdvisorResult advise_resolution(const TriangleMesh &surface, long long surface_g
     result.surface_genus = surface_genus;
     InitialModelOptions trial_options = options.initial;
     trial_options.b1 = 0.0;
+    trial_options.target_genus = surface_genus;
     for (int n = std::max(1, options.min_resolution); n <= options.max_resolution; ++n)
     {
         trial_options.resolution = n;

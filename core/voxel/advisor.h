@@ -15,10 +15,12 @@ namespace zomeify
 
 struct AdvisorOptions
 {
-    int min_resolution = 4;      //!< first resolution scanned
-    int max_resolution = 64;     //!< last resolution scanned
-    double seconds = 20.0;       //!< wall-time budget; the scan stops after the trial that exceeds it
-    InitialModelOptions initial; //!< retries and cleanup used for every trial (resolution ignored)
+    int min_resolution = 4;  //!< first resolution scanned
+    int max_resolution = 64; //!< last resolution scanned
+    double seconds = 20.0;   //!< wall-time budget; the scan stops after the trial that exceeds it
+    //! Retries and cleanup used for every trial (resolution ignored; target_genus is set to the
+    //! surface's, so a resolution counts when it or one of its nudged grids keeps the genus).
+    InitialModelOptions initial;
 };
 
 //! One resolution tried.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "core/base/stopwatch.h"
@@ -30,34 +31,76 @@ GridLayoutOptions nudged_layout(const InitialModelOptions &options, int attempt)
     return layout;
 }
 
+namespace
+{
+
+std::string describe(const GridSpec &grid, const GridLayoutOptions &layout)
+{
+    std::ostringstream os;
+    os << "grid " << grid.dims[0] << "x" << grid.dims[1] << "x" << grid.dims[2] << " (cell x" << layout.scale_factor
+       << ", offset " << layout.offset[0] << " " << layout.offset[1] << " " << layout.offset[2] << ")";
+    return os.str();
+}
+
+} // namespace
+
 InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSource &source,
                                  const InitialModelOptions &options)
 {
     Stopwatch clock;
     InitialModel out;
     InitialModelReport &rep = out.report;
+    // The first manifold result, kept in case no nudged grid reaches the target genus: the user's
+    // own grid then wins over a nudged one that is no better.
+    std::optional<InitialModel> first_valid;
     VoxelGrid grid;
     for (int attempt = 0; attempt <= std::max(0, options.max_retries); ++attempt)
     {
         rep.attempts = attempt + 1;
+        rep.attempt_used = attempt;
         rep.layout = nudged_layout(options, attempt);
         rep.grid = layout_grid(bbox[0], bbox[1], rep.layout);
         grid = source(rep.grid);
         rep.repair = repair_manifold(grid, options.repair);
-        if (rep.repair.manifold)
+        rep.valid = rep.repair.manifold;
+        rep.voxels = grid.occupied_count();
+        if (!rep.valid)
+        {
+            std::ostringstream note;
+            note << describe(rep.grid, rep.layout) << ": " << rep.repair.remaining_bad_vertices
+                 << " non-manifold vertices left with no simple cell to flip";
+            rep.notes.push_back(note.str());
+            continue;
+        }
+        Extraction ex = extract_boundary(grid);
+        out.model = std::move(ex.model);
+        rep.topology = ex.topology;
+        if (options.target_genus < 0 || rep.topology.genus == options.target_genus)
+        {
+            first_valid.reset();
             break;
+        }
         std::ostringstream note;
-        note << "grid " << rep.grid.dims[0] << "x" << rep.grid.dims[1] << "x" << rep.grid.dims[2] << " (cell x"
-             << rep.layout.scale_factor << ", offset " << rep.layout.offset[0] << " " << rep.layout.offset[1] << " "
-             << rep.layout.offset[2] << "): " << rep.repair.remaining_bad_vertices
-             << " non-manifold vertices left with no simple cell to flip";
+        note << describe(rep.grid, rep.layout) << ": genus " << rep.topology.genus << ", not " << options.target_genus;
         rep.notes.push_back(note.str());
+        if (!first_valid)
+            first_valid = out;
     }
-    rep.valid = rep.repair.manifold;
-    rep.voxels = grid.occupied_count();
-    Extraction ex = extract_boundary(grid);
-    out.model = std::move(ex.model);
-    rep.topology = ex.topology;
+    if (first_valid)
+    {
+        // No grid reached the target genus: fall back to the first manifold one.
+        std::vector<std::string> notes = std::move(rep.notes);
+        const int attempts = rep.attempts;
+        out = std::move(*first_valid);
+        rep.notes = std::move(notes);
+        rep.attempts = attempts;
+    }
+    else if (!rep.valid)
+    {
+        Extraction ex = extract_boundary(grid);
+        out.model = std::move(ex.model);
+        rep.topology = ex.topology;
+    }
     rep.seconds = clock.seconds();
     return out;
 }
@@ -65,10 +108,14 @@ InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSou
 InitialModel build_initial_model(const TriangleMesh &surface, const InsidePredicate &inside,
                                  const InitialModelOptions &options)
 {
-    VoxelizeStats stats;
-    auto source = [&](const GridSpec &spec) { return voxelize(surface, spec, inside, &stats); };
+    std::vector<VoxelizeStats> stats;
+    auto source = [&](const GridSpec &spec)
+    {
+        stats.emplace_back();
+        return voxelize(surface, spec, inside, &stats.back());
+    };
     InitialModel out = build_initial_model(bounding_box(surface), source, options);
-    out.report.voxelize = stats;
+    out.report.voxelize = stats.at(static_cast<size_t>(out.report.attempt_used));
     return out;
 }
 

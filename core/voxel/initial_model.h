@@ -23,8 +23,11 @@ struct InitialModelOptions
     int resolution = 16;
     //! Voxel edge in mesh units; overrides `resolution` when > 0.
     double b1 = 0.0;
-    //! Nudged grids tried after the first one fails to become manifold.
+    //! Nudged grids tried after the first one fails to become manifold (or misses target_genus).
     int max_retries = 8;
+    //! When >= 0 (the genus of S), a manifold Z0 of another genus also triggers the nudged
+    //! retries; the first grid that reaches this genus is taken, else the first manifold one.
+    long long target_genus = -1;
     RepairOptions repair;
 };
 
@@ -33,19 +36,20 @@ struct InitialModelReport
 {
     bool valid = false;             //!< the boundary is a closed 2-manifold
     int attempts = 0;               //!< grids tried (1 when the first one worked)
-    GridLayoutOptions layout;       //!< the layout of the last grid tried (nudges included)
+    int attempt_used = 0;           //!< the grid Z0 comes from (0 = the plain one, else a nudge)
+    GridLayoutOptions layout;       //!< the layout of the grid Z0 comes from (nudges included)
     GridSpec grid;                  //!< that grid
-    VoxelizeStats voxelize;         //!< of the last grid
-    RepairReport repair;            //!< of the last grid
+    VoxelizeStats voxelize;         //!< of that grid
+    RepairReport repair;            //!< of that grid
     size_t voxels = 0;              //!< occupied cells after the cleanup
     BoundaryTopology topology;      //!< of the extracted boundary
     double seconds = 0.0;           //!< wall time of the whole build
-    std::vector<std::string> notes; //!< one line per failed grid
+    std::vector<std::string> notes; //!< one line per grid that failed or missed the target genus
 };
 
 struct InitialModel
 {
-    ZomeModel model; //!< Z0 (the last grid's boundary, even when !report.valid)
+    ZomeModel model; //!< Z0 (the last grid's boundary when no grid became manifold)
     InitialModelReport report;
 };
 

