@@ -8,11 +8,13 @@
 #include "core/surface/readers.h"
 #include "core/surface/text_scan.h"
 
-namespace zomeify::detail {
+namespace zomeify::detail
+{
 
-namespace {
+namespace
+{
 
-Vec3 parse_vertex(TokenSplitter& tokens, size_t line)
+Vec3 parse_vertex(TokenSplitter &tokens, size_t line)
 {
     Vec3 p;
     for (int axis = 0; axis < 3; ++axis)
@@ -80,8 +82,8 @@ PolygonSoup read_obj(std::span<const uint8_t> bytes)
                     break;
                 const long long index = parse_corner(token, soup.positions.size(), lines.line_number());
                 if (index > std::numeric_limits<uint32_t>::max() - 1)
-                    throw InvalidInputError(at_line(lines.line_number()) + "face index " +
-                                            std::to_string(index + 1) + " is too large");
+                    throw InvalidInputError(at_line(lines.line_number()) + "face index " + std::to_string(index + 1) +
+                                            " is too large");
                 if (index > max_index)
                 {
                     max_index = index;

@@ -7,12 +7,14 @@
 #include "core/surface/readers.h"
 #include "core/surface/text_scan.h"
 
-namespace zomeify::detail {
+namespace zomeify::detail
+{
 
-namespace {
+namespace
+{
 
 // The next line that has something besides blanks and a comment, with the comment cut off.
-bool next_content_line(LineScanner& lines, std::string_view& line)
+bool next_content_line(LineScanner &lines, std::string_view &line)
 {
     while (lines.next(line))
     {
@@ -26,7 +28,7 @@ bool next_content_line(LineScanner& lines, std::string_view& line)
     return false;
 }
 
-long long parse_count(TokenSplitter& tokens, size_t line, const char* what)
+long long parse_count(TokenSplitter &tokens, size_t line, const char *what)
 {
     std::string_view token;
     long long n = 0;
@@ -73,8 +75,7 @@ PolygonSoup read_off(std::span<const uint8_t> bytes)
     const size_t available = lines.remaining_lines();
     if (static_cast<unsigned long long>(nv) + static_cast<unsigned long long>(nf) > available)
         throw InvalidInputError(at_line(count_line) + "header says " + std::to_string(nv) + " vertices and " +
-                                std::to_string(nf) + " faces, but only " + std::to_string(available) +
-                                " lines follow");
+                                std::to_string(nf) + " faces, but only " + std::to_string(available) + " lines follow");
     if (nv == 0)
         throw InvalidInputError(at_line(count_line) + "no vertices");
     PolygonSoup soup;
@@ -120,9 +121,8 @@ PolygonSoup read_off(std::span<const uint8_t> bytes)
                 throw InvalidInputError(at_line(n) + "face " + std::to_string(f) + " has fewer than " +
                                         std::to_string(k) + " indices");
             if (index < 0 || index >= nv)
-                throw InvalidInputError(at_line(n) + "face " + std::to_string(f) + ": index " +
-                                        std::to_string(index) + " is out of range (" + std::to_string(nv) +
-                                        " vertices)");
+                throw InvalidInputError(at_line(n) + "face " + std::to_string(f) + ": index " + std::to_string(index) +
+                                        " is out of range (" + std::to_string(nv) + " vertices)");
             polygon.push_back(static_cast<uint32_t>(index));
         }
         soup.polygons.push_back(std::move(polygon));

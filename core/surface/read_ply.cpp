@@ -9,9 +9,11 @@
 #include "core/surface/readers.h"
 #include "core/surface/text_scan.h"
 
-namespace zomeify::detail {
+namespace zomeify::detail
+{
 
-namespace {
+namespace
+{
 
 enum class Kind
 {
@@ -55,7 +57,7 @@ struct Header
     size_t body_offset = 0;
 };
 
-bool parse_type(std::string_view name, Type& type)
+bool parse_type(std::string_view name, Type &type)
 {
     struct Named
     {
@@ -63,14 +65,14 @@ bool parse_type(std::string_view name, Type& type)
         Type type;
     };
     static const Named table[] = {
-        {"char", {Kind::signed_int, 1}},    {"int8", {Kind::signed_int, 1}},   {"uchar", {Kind::unsigned_int, 1}},
-        {"uint8", {Kind::unsigned_int, 1}}, {"short", {Kind::signed_int, 2}},  {"int16", {Kind::signed_int, 2}},
+        {"char", {Kind::signed_int, 1}},     {"int8", {Kind::signed_int, 1}},     {"uchar", {Kind::unsigned_int, 1}},
+        {"uint8", {Kind::unsigned_int, 1}},  {"short", {Kind::signed_int, 2}},    {"int16", {Kind::signed_int, 2}},
         {"ushort", {Kind::unsigned_int, 2}}, {"uint16", {Kind::unsigned_int, 2}}, {"int", {Kind::signed_int, 4}},
-        {"int32", {Kind::signed_int, 4}},   {"uint", {Kind::unsigned_int, 4}}, {"uint32", {Kind::unsigned_int, 4}},
-        {"float", {Kind::floating, 4}},     {"float32", {Kind::floating, 4}},  {"double", {Kind::floating, 8}},
+        {"int32", {Kind::signed_int, 4}},    {"uint", {Kind::unsigned_int, 4}},   {"uint32", {Kind::unsigned_int, 4}},
+        {"float", {Kind::floating, 4}},      {"float32", {Kind::floating, 4}},    {"double", {Kind::floating, 8}},
         {"float64", {Kind::floating, 8}},
     };
-    for (const Named& n : table)
+    for (const Named &n : table)
         if (n.name == name)
         {
             type = n.type;
@@ -82,7 +84,7 @@ bool parse_type(std::string_view name, Type& type)
 // Finds the end of the header ("end_header" line) and parses everything before it.
 Header parse_header(std::span<const uint8_t> bytes)
 {
-    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
+    const std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
     if (text.substr(0, 3) != "ply" || text.size() < 4 || (text[3] != '\n' && text[3] != '\r'))
         throw InvalidInputError("not a PLY file (no 'ply' magic line)");
     size_t end = text.find("end_header");
@@ -164,15 +166,9 @@ Header parse_header(std::span<const uint8_t> bytes)
 class BodyReader
 {
 public:
-    BodyReader(std::span<const uint8_t> body, Encoding encoding)
-        : body_(body), encoding_(encoding), lines_(body)
-    {
-    }
+    BodyReader(std::span<const uint8_t> body, Encoding encoding) : body_(body), encoding_(encoding), lines_(body) {}
 
-    double value(const Type& type)
-    {
-        return encoding_ == Encoding::ascii ? ascii_value() : binary_value(type);
-    }
+    double value(const Type &type) { return encoding_ == Encoding::ascii ? ascii_value() : binary_value(type); }
 
     bool is_ascii() const { return encoding_ == Encoding::ascii; }
     size_t remaining_bytes() const { return is_ascii() ? body_.size() : body_.size() - pos_; }
@@ -180,11 +176,11 @@ public:
     std::string where() const { return is_ascii() ? at_line(lines_.line_number()) : ""; }
 
 private:
-    double binary_value(const Type& type)
+    double binary_value(const Type &type)
     {
         if (body_.size() - pos_ < static_cast<size_t>(type.size))
             throw InvalidInputError("file ends inside the data");
-        const uint8_t* p = body_.data() + pos_;
+        const uint8_t *p = body_.data() + pos_;
         pos_ += static_cast<size_t>(type.size);
         const bool big = encoding_ == Encoding::big_endian;
         if (type.kind == Kind::floating)
@@ -220,12 +216,14 @@ private:
 };
 
 // The smallest number of bytes one instance of `e` can take, for the size check.
-unsigned long long min_element_bytes(const Element& e, Encoding encoding)
+unsigned long long min_element_bytes(const Element &e, Encoding encoding)
 {
     unsigned long long bytes = 0;
-    for (const Property& p : e.properties)
+    for (const Property &p : e.properties)
         // An ASCII value is at least one character and a separator.
-        bytes += encoding == Encoding::ascii ? 2 : static_cast<unsigned long long>(p.is_list ? p.count_type.size : p.type.size);
+        bytes += encoding == Encoding::ascii
+                     ? 2
+                     : static_cast<unsigned long long>(p.is_list ? p.count_type.size : p.type.size);
     return bytes;
 }
 
@@ -236,7 +234,7 @@ std::string number_text(double v)
     return std::to_string(v);
 }
 
-int find_property(const Element& e, std::string_view name)
+int find_property(const Element &e, std::string_view name)
 {
     for (size_t i = 0; i < e.properties.size(); ++i)
         if (e.properties[i].name == name)
@@ -255,16 +253,17 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
 
     // Every element's claimed count against the body's size, before any allocation.
     unsigned long long budget = body.size() + 1; // +1: the last ASCII value needs no separator
-    const Element* vertex = nullptr;
-    const Element* face = nullptr;
-    for (const Element& e : header.elements)
+    const Element *vertex = nullptr;
+    const Element *face = nullptr;
+    for (const Element &e : header.elements)
     {
         const unsigned long long per = min_element_bytes(e, header.encoding);
         if (e.count > 0 && per == 0)
             throw InvalidInputError("element '" + e.name + "' has no properties");
         if (e.count > 0 && e.count > budget / per)
-            throw InvalidInputError("header says " + std::to_string(e.count) + " " + e.name + " elements, but the file has only " +
-                                    std::to_string(body.size()) + " bytes of data");
+            throw InvalidInputError("header says " + std::to_string(e.count) + " " + e.name +
+                                    " elements, but the file has only " + std::to_string(body.size()) +
+                                    " bytes of data");
         budget -= e.count * per;
         if (e.name == "vertex")
             vertex = &e;
@@ -273,7 +272,7 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
     }
     if (!vertex)
         throw InvalidInputError("no 'vertex' element");
-    static const char* const axis_names[3] = {"x", "y", "z"};
+    static const char *const axis_names[3] = {"x", "y", "z"};
     int axis_property[3];
     for (int a = 0; a < 3; ++a)
     {
@@ -297,7 +296,7 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
     soup.positions.reserve(static_cast<size_t>(vertex->count));
     soup.polygons.reserve(static_cast<size_t>(face->count));
     BodyReader reader(body, header.encoding);
-    for (const Element& e : header.elements)
+    for (const Element &e : header.elements)
     {
         const bool is_vertex = &e == vertex;
         const bool is_face = &e == face;
@@ -307,7 +306,7 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
             std::vector<uint32_t> polygon;
             for (size_t k = 0; k < e.properties.size(); ++k)
             {
-                const Property& prop = e.properties[k];
+                const Property &prop = e.properties[k];
                 if (!prop.is_list)
                 {
                     const double v = reader.value(prop.type);
@@ -324,7 +323,8 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
                 const double n = reader.value(prop.count_type);
                 const std::string what = reader.where() + e.name + " " + std::to_string(i);
                 // A list cannot hold more values than there are bytes left (ASCII: 2 per value).
-                const double limit = static_cast<double>(reader.remaining_bytes()) / (reader.is_ascii() ? 1 : prop.type.size);
+                const double limit =
+                    static_cast<double>(reader.remaining_bytes()) / (reader.is_ascii() ? 1 : prop.type.size);
                 if (!(n >= 0) || n > limit)
                     throw InvalidInputError(what + ": list length " + std::to_string(static_cast<long long>(n)) +
                                             " does not fit in the file");

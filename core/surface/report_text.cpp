@@ -6,11 +6,13 @@
 
 #include <nlohmann/json.hpp>
 
-namespace zomeify {
+namespace zomeify
+{
 
-namespace {
+namespace
+{
 
-double diagonal(const SurfaceReport& r)
+double diagonal(const SurfaceReport &r)
 {
     double s = 0;
     for (int a = 0; a < 3; ++a)
@@ -18,12 +20,12 @@ double diagonal(const SurfaceReport& r)
     return std::sqrt(s);
 }
 
-std::string count(size_t n, const std::string& noun)
+std::string count(size_t n, const std::string &noun)
 {
     return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
-std::string triple(const std::array<double, 3>& v)
+std::string triple(const std::array<double, 3> &v)
 {
     std::ostringstream os;
     os << std::setprecision(7) << v[0] << "  " << v[1] << "  " << v[2];
@@ -32,10 +34,10 @@ std::string triple(const std::array<double, 3>& v)
 
 } // namespace
 
-std::string surface_report_table(const SurfaceReport& r, const std::string& name)
+std::string surface_report_table(const SurfaceReport &r, const std::string &name)
 {
     std::ostringstream os;
-    const auto row = [&](const std::string& key, const std::string& value)
+    const auto row = [&](const std::string &key, const std::string &value)
     { os << std::left << std::setw(16) << key << value << "\n"; };
     const auto yes_no = [](bool b) { return std::string(b ? "yes" : "no"); };
     row("file", name);
@@ -43,11 +45,12 @@ std::string surface_report_table(const SurfaceReport& r, const std::string& name
     row("vertices", std::to_string(r.vertices));
     row("faces", std::to_string(r.faces) + " triangles");
     row("edges", std::to_string(r.edges));
-    row("closed", yes_no(r.closed) + (r.closed ? "" : " (" + count(r.holes, "hole") + ", " +
-                                                           count(r.boundary_edges, "boundary edge") + ")"));
+    row("closed",
+        yes_no(r.closed) +
+            (r.closed ? "" : " (" + count(r.holes, "hole") + ", " + count(r.boundary_edges, "boundary edge") + ")"));
     row("manifold", yes_no(r.manifold));
-    row("components", std::to_string(r.components) +
-                          (r.cavities ? " (" + std::to_string(r.cavities) + " of them cavities)" : ""));
+    row("components",
+        std::to_string(r.components) + (r.cavities ? " (" + std::to_string(r.cavities) + " of them cavities)" : ""));
     row("euler", std::to_string(r.euler));
     row("genus", std::to_string(r.genus));
     row("bbox min", triple(r.bbox_min));
@@ -66,7 +69,7 @@ std::string surface_report_table(const SurfaceReport& r, const std::string& name
     return os.str();
 }
 
-std::string surface_report_json(const SurfaceReport& r, const std::string& name)
+std::string surface_report_json(const SurfaceReport &r, const std::string &name)
 {
     nlohmann::ordered_json j;
     j["file"] = name;

@@ -7,19 +7,18 @@
 
 #include "core/surface/nesting.h"
 
-namespace zomeify {
+namespace zomeify
+{
 
-namespace {
+namespace
+{
 
 constexpr uint32_t none = 0xFFFFFFFFu;
 
 class UnionFind
 {
 public:
-    explicit UnionFind(size_t n) : parent_(n)
-    {
-        std::iota(parent_.begin(), parent_.end(), uint32_t{0});
-    }
+    explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), uint32_t{0}); }
     uint32_t find(uint32_t x)
     {
         while (parent_[x] != x)
@@ -64,8 +63,8 @@ struct Adjacency
 
 } // namespace
 
-TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<std::array<uint32_t, 3>>& triangles,
-                              const TopologyOptions& options)
+TopologyInfo analyse_topology(const std::vector<Vec3> &positions, std::vector<std::array<uint32_t, 3>> &triangles,
+                              const TopologyOptions &options)
 {
     TopologyInfo info;
     const size_t nf = triangles.size();
@@ -78,8 +77,8 @@ TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<st
     for (uint32_t f = 0; f < nf; ++f)
         for (uint8_t k = 0; k < 3; ++k)
             uses.push_back({edge_key(triangles[f][k], triangles[f][(k + 1) % 3]), f, k});
-    std::sort(uses.begin(), uses.end(), [](const EdgeUse& a, const EdgeUse& b)
-              { return a.key != b.key ? a.key < b.key : a.face < b.face; });
+    std::sort(uses.begin(), uses.end(),
+              [](const EdgeUse &a, const EdgeUse &b) { return a.key != b.key ? a.key < b.key : a.face < b.face; });
 
     Adjacency adj{std::vector<uint32_t>(3 * nf, none), std::vector<uint8_t>(3 * nf, 0)};
     UnionFind faces(nf);
@@ -109,8 +108,8 @@ TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<st
         }
         else if (count == 2)
         {
-            const EdgeUse& u = uses[i];
-            const EdgeUse& w = uses[i + 1];
+            const EdgeUse &u = uses[i];
+            const EdgeUse &w = uses[i + 1];
             const uint32_t u_from = triangles[u.face][u.corner];
             const uint32_t w_from = triangles[w.face][w.corner];
             const bool same = u_from == w_from;
@@ -199,7 +198,8 @@ TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<st
     }
     for (size_t c = 0; c < info.components; ++c)
         info.genus += (2 - chi[c] - loops[c]) / 2;
-    info.euler = static_cast<long long>(info.vertices) - static_cast<long long>(info.edges) + static_cast<long long>(nf);
+    info.euler =
+        static_cast<long long>(info.vertices) - static_cast<long long>(info.edges) + static_cast<long long>(nf);
 
     // Consistent orientation: breadth-first over manifold edges; a face must run along a shared
     // edge opposite to its neighbour. A contradiction means the component is not orientable.
@@ -247,7 +247,7 @@ TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<st
         const uint32_t c = component[f];
         if (anchor[c] == none)
             anchor[c] = triangles[f][0];
-        const Vec3& o = positions[anchor[c]];
+        const Vec3 &o = positions[anchor[c]];
         const Vec3 a = positions[triangles[f][0]] - o;
         const Vec3 b = positions[triangles[f][1]] - o;
         const Vec3 d = positions[triangles[f][2]] - o;

@@ -10,17 +10,19 @@
 #include "core/surface/read_mesh.h"
 #include "tests/surface/surface_fixtures.h"
 
-namespace zomeify::surface_test {
-namespace {
+namespace zomeify::surface_test
+{
+namespace
+{
 
-const char* const all_names[] = {"m.obj", "m.stl", "m.ply", "m.off", "m.gltf", "m.glb"};
+const char *const all_names[] = {"m.obj", "m.stl", "m.ply", "m.off", "m.gltf", "m.glb"};
 
-std::string read_error(const std::string& bytes, const std::string& name)
+std::string read_error(const std::string &bytes, const std::string &name)
 {
     return invalid_input_message([&] { read_mesh_buffer(bytes_of(bytes), name); });
 }
 
-std::string prepare_error(const PolygonSoup& soup)
+std::string prepare_error(const PolygonSoup &soup)
 {
     return invalid_input_message([&] { prepare_surface(soup); });
 }
@@ -29,7 +31,7 @@ std::string prepare_error(const PolygonSoup& soup)
 
 TEST(SurfaceBadInput, EmptyFile)
 {
-    for (const char* name : all_names)
+    for (const char *name : all_names)
     {
         const std::string m = read_error("", name);
         EXPECT_CONTAINS(m, name);
@@ -43,9 +45,9 @@ TEST(SurfaceBadInput, RandomBytes)
     for (int round = 0; round < 40; ++round)
     {
         std::string bytes(static_cast<size_t>(1 + rng() % 4000), '\0');
-        for (char& c : bytes)
+        for (char &c : bytes)
             c = static_cast<char>(rng() & 0xFF);
-        for (const char* name : all_names)
+        for (const char *name : all_names)
         {
             SCOPED_TRACE(name);
             EXPECT_FALSE(read_error(bytes, name).empty());
@@ -69,7 +71,8 @@ TEST(SurfaceBadInput, NanAndInfCoordinates)
 {
     EXPECT_CONTAINS(read_error("v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n", "m.obj"), "line 2: vertex coordinate is NaN");
     EXPECT_CONTAINS(read_error("v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n", "m.obj"), "line 3");
-    EXPECT_CONTAINS(read_error("OFF\n3 1 0\n0 0 0\n1 0 -inf\n0 1 0\n3 0 1 2\n", "m.off"), "vertex 1 has a NaN or infinite");
+    EXPECT_CONTAINS(read_error("OFF\n3 1 0\n0 0 0\n1 0 -inf\n0 1 0\n3 0 1 2\n", "m.off"),
+                    "vertex 1 has a NaN or infinite");
     EXPECT_CONTAINS(read_error("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
                                "end_header\n0 0 0\n1 NaN 0\n0 1 0\n3 0 1 2\n",
@@ -95,7 +98,7 @@ TEST(SurfaceBadInput, NanAndInfCoordinates)
 TEST(SurfaceBadInput, HugeCoordinates)
 {
     PolygonSoup soup = cube_quads();
-    for (Vec3& p : soup.positions)
+    for (Vec3 &p : soup.positions)
         p *= 1e308;
     const SurfaceReport r = diagnose(soup);
     EXPECT_EQ(r.vertices, 8u);
@@ -221,8 +224,8 @@ TEST(SurfaceBadInput, MoebiusStripIsNotOrientable)
         for (const double w : {0.5, -0.5})
         {
             const double t = 2 * 3.14159265358979 * i / n;
-            strip.positions.push_back(
-                Vec3((2 + w * std::cos(t / 2)) * std::cos(t), (2 + w * std::cos(t / 2)) * std::sin(t), w * std::sin(t / 2)));
+            strip.positions.push_back(Vec3((2 + w * std::cos(t / 2)) * std::cos(t),
+                                           (2 + w * std::cos(t / 2)) * std::sin(t), w * std::sin(t / 2)));
         }
     // Vertex 2i is a_i (w = +0.5), 2i + 1 is b_i; going once round swaps the two sides.
     for (uint32_t i = 0; i + 1 < n; ++i)
@@ -243,7 +246,8 @@ TEST(SurfaceBadInput, TruncatedFiles)
     const std::string glb = to_gltf(cube_quads(), true);
     EXPECT_CONTAINS(read_error(glb.substr(0, glb.size() - 10), "m.glb"), "invalid glTF");
     EXPECT_CONTAINS(read_error("OFF\n8 6 0\n0 0 0\n", "m.off"), "only 1 lines follow");
-    EXPECT_CONTAINS(read_error("solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", "m.stl"), "ends inside a facet");
+    EXPECT_CONTAINS(read_error("solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n", "m.stl"),
+                    "ends inside a facet");
 }
 
 TEST(SurfaceBadInput, MalformedText)

@@ -9,19 +9,21 @@
 #include "core/surface/weld.h"
 #include "tests/surface/surface_fixtures.h"
 
-namespace zomeify::surface_test {
-namespace {
-
-bool mentions(const std::vector<std::string>& lines, const std::string& word)
+namespace zomeify::surface_test
 {
-    for (const auto& l : lines)
+namespace
+{
+
+bool mentions(const std::vector<std::string> &lines, const std::string &word)
+{
+    for (const auto &l : lines)
         if (l.find(word) != std::string::npos)
             return true;
     return false;
 }
 
 // Every vertex is one of: kept, welded away, unused, or non-finite.
-void expect_vertex_balance(const SurfaceReport& r)
+void expect_vertex_balance(const SurfaceReport &r)
 {
     EXPECT_EQ(r.input_vertices, r.vertices + r.welded_vertices + r.unreferenced_vertices + r.non_finite_vertices);
 }
@@ -63,10 +65,10 @@ TEST(SurfacePrepare, NonConvexPolygonIsEarClipped)
     EXPECT_EQ(p.report.faces, 2u * 4 + 6 * 2);
     EXPECT_NEAR(signed_volume(p.mesh), 3.0, 1e-12);
     // Each triangle of the caps points the way its cap does (no fold-over).
-    for (const auto& t : p.mesh.triangles)
+    for (const auto &t : p.mesh.triangles)
     {
-        const Vec3 n = (p.mesh.positions[t[1]] - p.mesh.positions[t[0]])
-                           .cross(p.mesh.positions[t[2]] - p.mesh.positions[t[0]]);
+        const Vec3 n =
+            (p.mesh.positions[t[1]] - p.mesh.positions[t[0]]).cross(p.mesh.positions[t[2]] - p.mesh.positions[t[0]]);
         const double z = p.mesh.positions[t[0]].z();
         if (std::abs(n.x()) + std::abs(n.y()) < 1e-12)
         {
@@ -94,7 +96,7 @@ TEST(SurfacePrepare, TriangulateKeepsAreaOfStars)
         triangulate_polygon(positions, polygon, triangles);
         ASSERT_EQ(triangles.size(), 2u * points - 2);
         double area = 0;
-        for (const auto& t : triangles)
+        for (const auto &t : triangles)
         {
             const double z = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).z();
             EXPECT_GT(z, 0);
@@ -189,7 +191,7 @@ TEST(SurfacePrepare, NestedShellsBoundCavities)
     const auto cube = [](double side)
     {
         PolygonSoup c = cube_quads(Vec3::Constant(-0.5));
-        for (Vec3& p : c.positions)
+        for (Vec3 &p : c.positions)
             p *= side;
         return c;
     };
@@ -214,7 +216,8 @@ TEST(SurfacePrepare, TorusOfQuadsHasGenusOne)
         for (int j = 0; j < m; ++j)
         {
             const double u = 2 * 3.14159265358979 * i / n, v = 2 * 3.14159265358979 * j / m;
-            soup.positions.push_back(Vec3((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v)));
+            soup.positions.push_back(
+                Vec3((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v)));
         }
     const auto id = [&](int i, int j) { return static_cast<uint32_t>(((i + n) % n) * m + (j + m) % m); };
     for (int i = 0; i < n; ++i)

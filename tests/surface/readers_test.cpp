@@ -12,18 +12,20 @@
 #include "tests/support/paths.h"
 #include "tests/surface/surface_fixtures.h"
 
-namespace zomeify::surface_test {
-namespace {
+namespace zomeify::surface_test
+{
+namespace
+{
 
 using test::shared_path;
 using test::temp_path;
 
-PolygonSoup read(const std::string& text, const std::string& name)
+PolygonSoup read(const std::string &text, const std::string &name)
 {
     return read_mesh_buffer(bytes_of(text), name);
 }
 
-void expect_closed_cube(const PolygonSoup& soup)
+void expect_closed_cube(const PolygonSoup &soup)
 {
     const PreparedSurface p = prepare_surface(soup);
     EXPECT_EQ(p.report.vertices, 8u);
@@ -42,13 +44,13 @@ TEST(SurfaceReaders, ObjAllFaceForms)
                             "v 0 0 1 1.0\r\nv 1 0 1\r\nv 1 1 1\r\nv 0 1 1 0.5 0.5 0.5\r\n"
                             "vt 0 0\r\nvt 1 0\r\nvn 0 0 1\r\n"
                             "g sides\r\nusemtl red\r\ns 1\r\n"
-                            "f 1 4 3 2\r\n"                      // plain, quad
-                            "f 5/1 6/2 7/1 8/2\r\n"              // a/b
+                            "f 1 4 3 2\r\n"                         // plain, quad
+                            "f 5/1 6/2 7/1 8/2\r\n"                 // a/b
                             "f 1//1 2//1 6//1 5//1  # trailing\r\n" // a//c
-                            "f 4/1/1 8/1/1 7/2/1 3/2/1\r\n"      // a/b/c
+                            "f 4/1/1 8/1/1 7/2/1 3/2/1\r\n"         // a/b/c
                             "s off\r\n"
-                            "f -8 -4 -1 -5\r\n"                  // negative: 1 5 8 4
-                            "f -7 -6 -2 -3\r\n"                  // 2 3 7 6
+                            "f -8 -4 -1 -5\r\n" // negative: 1 5 8 4
+                            "f -7 -6 -2 -3\r\n" // 2 3 7 6
                             "l 1 2\r\n";
     const PolygonSoup soup = read(obj, "cube.obj");
     ASSERT_EQ(soup.positions.size(), 8u);
@@ -136,8 +138,8 @@ TEST(SurfaceReaders, OffWithCommentsAndColours)
     EXPECT_EQ(soup.polygons.size(), 6u);
     expect_closed_cube(soup);
     // Counts on the header line; COFF keyword.
-    const PolygonSoup same = read("COFF 8 6 0\n" + to_off(cube_quads()).substr(to_off(cube_quads()).find('\n', 4) + 1),
-                                  "cube.off");
+    const PolygonSoup same =
+        read("COFF 8 6 0\n" + to_off(cube_quads()).substr(to_off(cube_quads()).find('\n', 4) + 1), "cube.off");
     EXPECT_EQ(same.polygons.size(), 6u);
 }
 
@@ -203,7 +205,7 @@ TEST(SurfaceReaders, GltfExternalBuffer)
 TEST(SurfaceReaders, StlAsciiUpperCaseKeywords)
 {
     std::string stl = to_stl_ascii(cube_quads());
-    for (const char* word : {"solid", "facet", "normal", "outer", "loop", "vertex", "endloop", "endfacet", "endsolid"})
+    for (const char *word : {"solid", "facet", "normal", "outer", "loop", "vertex", "endloop", "endfacet", "endsolid"})
         for (size_t at = stl.find(word); at != std::string::npos; at = stl.find(word, at + 1))
             for (size_t k = 0; k < std::string(word).size(); ++k)
                 stl[at + k] = static_cast<char>(stl[at + k] - 'a' + 'A');
@@ -217,13 +219,13 @@ TEST(SurfaceReaders, GltfStripsFansAndNodeHierarchy)
     tinygltf::Model model;
     std::string data;
     const float corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    data.append(reinterpret_cast<const char*>(corners), sizeof corners); // little-endian host
+    data.append(reinterpret_cast<const char *>(corners), sizeof corners); // little-endian host
     const uint8_t strip[8] = {0, 1, 2, 3, 0, 1, 0, 0};                    // 6 used, padded to 4 bytes
-    data.append(reinterpret_cast<const char*>(strip), sizeof strip);
+    data.append(reinterpret_cast<const char *>(strip), sizeof strip);
     const uint16_t fan[6] = {0, 1, 2, 3, 1, 0}; // 5 used
-    data.append(reinterpret_cast<const char*>(fan), sizeof fan);
+    data.append(reinterpret_cast<const char *>(fan), sizeof fan);
     const uint16_t base[4] = {1, 3, 2, 0}; // 3 used
-    data.append(reinterpret_cast<const char*>(base), sizeof base);
+    data.append(reinterpret_cast<const char *>(base), sizeof base);
     tinygltf::Buffer buffer;
     buffer.data.assign(data.begin(), data.end());
     model.buffers.push_back(buffer);
@@ -266,7 +268,8 @@ TEST(SurfaceReaders, GltfStripsFansAndNodeHierarchy)
     tinygltf::Mesh strip_mesh, fan_mesh;
     strip_mesh.primitives = {primitive(strip_indices, TINYGLTF_MODE_TRIANGLE_STRIP)};
     fan_mesh.primitives = {primitive(fan_indices, TINYGLTF_MODE_TRIANGLE_FAN),
-                           primitive(base_indices, TINYGLTF_MODE_TRIANGLES), primitive(base_indices, TINYGLTF_MODE_LINE)};
+                           primitive(base_indices, TINYGLTF_MODE_TRIANGLES),
+                           primitive(base_indices, TINYGLTF_MODE_LINE)};
     model.meshes = {strip_mesh, fan_mesh};
     tinygltf::Node root, strip_node, fan_node, unused;
     root.translation = {10, 0, 0};
