@@ -10,4 +10,8 @@ if [ -f ../shared/data/vef/bunny.vef ]; then
   echo; echo "\$ zomeify parts ../shared/data/vef/bunny.vef   # the paper's Zome bunny"
   build/native/core/cli/zomeify parts ../shared/data/vef/bunny.vef
 fi
+if [ -f ../shared/data/meshes/torus.obj ]; then
+  echo; echo "\$ zomeify run ../shared/data/meshes/torus.obj --initial-only --resolution 12 -o build/torus-z0.zome.json"
+  build/native/core/cli/zomeify run ../shared/data/meshes/torus.obj --initial-only --resolution 12 -o build/torus-z0.zome.json
+fi
 echo; echo "The CLI is build/native/core/cli/zomeify (zomeify --help lists its commands)."
