@@ -22,12 +22,12 @@ bool float_box_contains(const BvhNode& node, int side, const Box3& absolute, con
 void check_structure(const Bvh& bvh, const std::vector<Box3>& boxes, int max_leaf)
 {
     std::vector<int> seen(boxes.size(), 0);
-    std::vector<std::pair<uint32_t, int>> todo{{0u, 1}};
+    std::vector<std::pair<uint32_t, int>> pending{{0u, 1}};
     size_t leaves = 0;
-    while (!todo.empty())
+    while (!pending.empty())
     {
-        const auto [index, depth] = todo.back();
-        todo.pop_back();
+        const auto [index, depth] = pending.back();
+        pending.pop_back();
         ASSERT_LT(index, bvh.nodes().size());
         ASSERT_LE(depth, Bvh::kMaxDepth);
         const BvhNode& node = bvh.nodes()[index];
@@ -40,7 +40,7 @@ void check_structure(const Bvh& bvh, const std::vector<Box3>& boxes, int max_lea
             }
             if (node.count[side] == 0)
             {
-                todo.push_back({node.child[side], depth + 1});
+                pending.push_back({node.child[side], depth + 1});
                 continue;
             }
             ++leaves;
@@ -65,12 +65,12 @@ void check_wide(const Bvh& bvh, const std::vector<Box3>& boxes)
 {
     const WideBvh wide(bvh);
     std::vector<int> seen(boxes.size(), 0);
-    std::vector<uint32_t> todo{0u};
+    std::vector<uint32_t> pending{0u};
     size_t visited = 0;
-    while (!todo.empty())
+    while (!pending.empty())
     {
-        const uint32_t index = todo.back();
-        todo.pop_back();
+        const uint32_t index = pending.back();
+        pending.pop_back();
         ASSERT_LT(index, wide.nodes().size());
         ++visited;
         const WideBvhNode& node = wide.nodes()[index];
@@ -84,7 +84,7 @@ void check_wide(const Bvh& bvh, const std::vector<Box3>& boxes)
             }
             if (!WideBvhNode::is_leaf(c))
             {
-                todo.push_back(c);
+                pending.push_back(c);
                 continue;
             }
             const Box3 box = WideBvh::child_box(node, j);
