@@ -1,5 +1,7 @@
 #include "core/geom/projection_cache.h"
 
+#include "core/base/hash.h"
+
 #include <algorithm>
 #include <bit>
 #include <mutex>
@@ -13,12 +15,7 @@ namespace {
 // and the slot (low bits) see every input bit.
 uint64_t mix(uint64_t x)
 {
-    x ^= x >> 30;
-    x *= 0xbf58476d1ce4e5b9ull;
-    x ^= x >> 27;
-    x *= 0x94d049bb133111ebull;
-    x ^= x >> 31;
-    return x;
+    return mix64(x);
 }
 
 struct Entry

@@ -1,5 +1,7 @@
 #include "core/zome/zvec.h"
 
+#include "core/base/hash.h"
+
 #include <limits>
 #include <ostream>
 
@@ -59,21 +61,13 @@ QPhi dot4(const ZVec& u, const ZVec& v)
 
 size_t ZVecHash::operator()(const ZVec& v) const noexcept
 {
-    // Two 64-bit words of packed coordinates, each mixed with a splitmix64 finaliser.
-    auto mix = [](uint64_t x) {
-        x ^= x >> 30;
-        x *= 0xbf58476d1ce4e5b9ULL;
-        x ^= x >> 27;
-        x *= 0x94d049bb133111ebULL;
-        x ^= x >> 31;
-        return x;
-    };
+    // Three 64-bit words of packed coordinates, each mixed with a splitmix64 finaliser.
     uint64_t h = 0x9e3779b97f4a7c15ULL;
     for (int i = 0; i < 6; i += 2)
     {
         const uint64_t w = (static_cast<uint64_t>(static_cast<uint32_t>(v.c[i])) << 32) |
                            static_cast<uint32_t>(v.c[i + 1]);
-        h = mix(h ^ w) + 0x9e3779b97f4a7c15ULL;
+        h = mix64(h ^ w) + 0x9e3779b97f4a7c15ULL;
     }
     return static_cast<size_t>(h);
 }

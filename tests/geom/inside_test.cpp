@@ -79,7 +79,7 @@ TEST(GeomInside, CornersAndEdgesOfTheCube)
     EXPECT_FALSE(inside.is_inside(Vec3(1, 0.5, 0.5))); // on S counts as outside
 }
 
-TEST(GeomInside, ThinTorusTube)
+TEST(GeomInside, ThinTorusRing)
 {
     // Points inside a thin tube are close to faces on both sides of it.
     const TriangleMesh mesh = test::make_torus(1.0, 0.02, 128, 12);
