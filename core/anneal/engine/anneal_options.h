@@ -1,0 +1,39 @@
+#pragma once
+//! \file anneal_options.h
+//! What one annealing run is asked to do (design.md §3.5–§3.6, paper §5.2).
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/anneal/energy_options.h"
+
+namespace zomeify {
+
+struct AnnealOptions
+{
+    //! Time budget in seconds, used when max_proposals is 0. The temperature reaches
+    //! min_temperature when the budget ends.
+    double seconds = 60.0;
+    //! > 0: a proposal budget instead of a time budget. With threads = 1 the run is then
+    //! deterministic: the same seed gives a bit-identical model natively and in wasm (no decision
+    //! depends on the clock).
+    uint64_t max_proposals = 0;
+    //! Annealing threads; 0 = the hardware's concurrency. The calling thread is one of them.
+    int threads = 0;
+    uint64_t seed = 1;
+    //! N_target of E_complex; 0 = N0, the node count of the starting model.
+    size_t target_nodes = 0;
+    //! Weights and forbidden zones (energy.target_nodes is overwritten by target_nodes / N0).
+    EnergyOptions energy;
+
+    //! T0; 0 = 0.1 · stdev of ΔE over random valid proposals on the starting model (paper §5.3).
+    double initial_temperature = 0.0;
+    //! T_min (paper: 1e-5).
+    double min_temperature = 1e-5;
+    //! Valid proposals sampled for T0.
+    int t0_samples = 2000;
+    //! Seconds between calls of the progress callback (and best-model snapshots).
+    double progress_interval = 0.25;
+};
+
+} // namespace zomeify

@@ -1,0 +1,57 @@
+#pragma once
+//! \file anneal_stats.h
+//! What an annealing run reports while it works (AnnealProgress) and when it ends (AnnealStats).
+
+#include <array>
+#include <cstdint>
+
+#include "core/anneal/energy_sums.h"
+#include "core/anneal/proposal.h"
+
+namespace zomeify {
+
+//! A consistent view of a running annealer (taken under the commit lock, so the energy, the
+//! counts and the model all belong to one state).
+struct AnnealProgress
+{
+    double elapsed_seconds = 0.0;
+    double fraction = 0.0;    //!< of the budget (time or proposals) used, in [0, 1]
+    double temperature = 0.0; //!< current T
+    EnergyTerms energy;       //!< E and its terms now (energy.sums.nodes = N)
+    double best_energy = 0.0; //!< lowest E at a progress sample so far
+    size_t nodes = 0, struts = 0, faces = 0;
+    uint64_t proposals = 0;       //!< propose() calls
+    uint64_t valid_proposals = 0; //!< proposals that were valid (reached the Metropolis test)
+    uint64_t commits = 0;         //!< accepted and applied
+    double acceptance_rate = 0.0; //!< commits / valid proposals
+    bool finished = false;
+};
+
+//! Counters per operator kind.
+struct OperatorCounts
+{
+    uint64_t proposed = 0; //!< propose() calls of this kind
+    uint64_t valid = 0;    //!< valid proposals
+    uint64_t accepted = 0; //!< committed
+};
+
+struct AnnealStats
+{
+    double wall_seconds = 0.0;
+    int threads = 1;
+    uint64_t proposals = 0, valid_proposals = 0, commits = 0;
+    double proposals_per_second = 0.0, commits_per_second = 0.0;
+    double initial_temperature = 0.0, min_temperature = 0.0;
+    int t0_valid_samples = 0; //!< valid proposals T0 was estimated from
+    bool cancelled = false;
+    std::array<OperatorCounts, kOperatorKinds> per_operator{};
+    std::array<uint64_t, kRejectionKinds> rejections{}; //!< why proposals were not valid
+    uint64_t busy_seeds = 0;          //!< seed draws that found the node claimed by another thread
+    uint64_t dead_seeds = 0;          //!< seed draws that hit a deleted node slot
+    uint64_t lost_races = 0;          //!< accepted proposals dropped at commit (position taken meanwhile)
+    uint64_t garbage_collections = 0; //!< synchronized pauses to compact and grow the mesh
+    //! After the run the incremental sums equalled a fresh evaluation, bit for bit.
+    bool energy_consistent = false;
+};
+
+} // namespace zomeify

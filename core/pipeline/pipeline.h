@@ -1,0 +1,73 @@
+#pragma once
+//! \file pipeline.h
+//! The whole run (design.md §5, `zomeify run`): surface → Z0 (core/voxel) → annealed model
+//! (core/anneal/engine), with the reports both stages produce. The CLI and the web page's worker
+//! both call run_pipeline(), so the two cannot drift apart.
+
+#include <atomic>
+#include <functional>
+#include <optional>
+#include <string>
+
+#include "core/anneal/engine/annealer.h"
+#include "core/geom/triangle_mesh.h"
+#include "core/voxel/initial_model.h"
+#include "core/zome/model.h"
+
+namespace zomeify {
+
+struct PipelineOptions
+{
+    //! Cells along the longest side of the bounding box (used when b1 is 0).
+    int resolution = 16;
+    //! Voxel edge b1 in mesh units; overrides resolution when > 0.
+    double b1 = 0.0;
+    //! Stop after Z0 (no annealing).
+    bool initial_only = false;
+    //! When Z0 misses the genus of the surface, look for a resolution that keeps it (up to
+    //! advisor_seconds) and put the hint in PipelineResult::advice.
+    bool advise = true;
+    double advisor_seconds = 10.0;
+    AnnealOptions anneal;
+};
+
+struct PipelineCallbacks
+{
+    //! Z0 is ready (before annealing starts).
+    std::function<void(const ZomeModel& z0)> initial;
+    //! About every anneal.progress_interval seconds during annealing, on the calling thread;
+    //! annealer.snapshot() gives the current model, annealer.cancel() stops the run.
+    std::function<void(const AnnealProgress&, Annealer& annealer)> progress;
+    //! Polled with the progress; when it becomes true the run stops and keeps its best model.
+    const std::atomic<bool>* cancel = nullptr;
+};
+
+struct PipelineResult
+{
+    long long surface_genus = 0;
+    int resolution = 0;           //!< cells along the longest side actually used
+    InitialModel initial;         //!< Z0 and its report
+    std::string advice;           //!< the resolution hint when Z0 missed the surface's genus
+    std::optional<AnnealResult> anneal; //!< absent with initial_only
+    //! The model to write: the best annealed model when the run was cancelled, the final one
+    //! otherwise (Z0 with initial_only). Carries the transform and stats_json.
+    ZomeModel model;
+    EnergyTerms model_energy;     //!< of `model` (after annealing)
+    int model_genus = 0;          //!< of `model`, from validate()
+    bool model_valid = false;     //!< `model` passed validate() (closed, Zome rules)
+    std::string validation;       //!< validate()'s one-line message
+    size_t fold_overs = 0;        //!< faces of `model` facing against the surface normal at π(barycentre)
+    double initial_seconds = 0.0; //!< Z0 build time
+    double seconds = 0.0;         //!< whole pipeline wall time
+};
+
+//! Runs the pipeline on a prepared (closed, outward-oriented) surface of genus surface_genus.
+//! Throws InvalidInputError with a one-line message when Z0 cannot be built or options are bad.
+PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus, const PipelineOptions& options,
+                            const PipelineCallbacks& callbacks = {});
+
+//! The --stats object (design.md §5): wall seconds, threads, proposals and commits (total, per
+//! second), N, struts by kind, genus of S and Z, every energy term at start and end, Z0 details.
+std::string pipeline_stats_json(const PipelineResult& result, int indent = 2);
+
+} // namespace zomeify
