@@ -1,0 +1,447 @@
+#include "wasm/session.h"
+
+#include <algorithm>
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "core/base/errors.h"
+#include "core/base/stopwatch.h"
+#include "core/geom/closest_point.h"
+#include "core/geom/inside.h"
+#include "core/io/model_io.h"
+#include "core/io/obj_export.h"
+#include "core/io/share_link.h"
+#include "core/mesh/model_convert.h"
+#include "core/mesh/validate.h"
+#include "core/parts/parts_list.h"
+#include "core/parts/parts_report.h"
+#include "core/pipeline/pipeline.h"
+#include "core/surface/read_mesh.h"
+#include "core/surface/report_text.h"
+#include "core/voxel/advisor.h"
+#include "core/voxel/initial_model.h"
+#include "core/zome/slots.h"
+
+namespace zomeify::web
+{
+
+//! The prepared input surface and the queries built on it (immutable once loaded).
+struct LoadedSurface
+{
+    TriangleMesh mesh;
+    SurfaceReport report;
+    std::unique_ptr<SurfaceProjector> projector;
+    std::unique_ptr<InsideTest> inside;
+
+    InsidePredicate is_inside() const
+    {
+        return [this](const Vec3 &p) { return inside->is_inside(p); };
+    }
+};
+
+namespace
+{
+
+std::string error_json(const std::string &message)
+{
+    return nlohmann::json{{"ok", false}, {"error", message}}.dump();
+}
+
+std::string extension_of(const std::string &name)
+{
+    const size_t dot = name.find_last_of('.');
+    std::string ext = dot == std::string::npos ? "" : name.substr(dot);
+    for (char &c : ext)
+        c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext;
+}
+
+bool is_model_file_name(const std::string &name)
+{
+    const std::string ext = extension_of(name);
+    return ext == ".json" || ext == ".vef";
+}
+
+//! Runs `body`, turning every exception into {ok:false, error} (bad input must never escape).
+template <class F> std::string guarded(F &&body)
+{
+    try
+    {
+        return body();
+    }
+    catch (const std::bad_alloc &)
+    {
+        return error_json("out of memory: the input is too large for the browser");
+    }
+    catch (const std::exception &e)
+    {
+        return error_json(e.what());
+    }
+}
+
+InitialModelOptions z0_options(int resolution, long long genus)
+{
+    InitialModelOptions o;
+    o.resolution = resolution;
+    o.target_genus = genus;
+    return o;
+}
+
+std::string advice_for(const LoadedSurface &s, int resolution, long long genus)
+{
+    if (genus == s.report.genus)
+        return "";
+    AdvisorOptions advisor;
+    advisor.seconds = 3.0;
+    advisor.min_resolution = resolution + 1;
+    advisor.max_resolution = std::max(48, 2 * resolution);
+    AdvisorResult found = advise_resolution(s.mesh, s.report.genus, s.is_inside(), advisor);
+    return advice_message(resolution, genus, found);
+}
+
+} // namespace
+
+Session::Session() = default;
+
+Session::~Session()
+{
+    cancel();
+    if (run_thread_.joinable())
+        run_thread_.join();
+}
+
+bool Session::busy() const
+{
+    return run_ && !run_->get().finished();
+}
+
+std::string Session::load_mesh(const std::string &bytes, const std::string &file_name)
+{
+    return guarded([&] {
+        if (busy())
+            throw InvalidInputError("a run is in progress; cancel it first");
+        if (is_model_file_name(file_name))
+            return load_model(bytes, file_name);
+        if (!is_mesh_file_name(file_name))
+            throw InvalidInputError(file_name + ": unknown file type (use .obj .stl .ply .off .gltf .glb, or a "
+                                                ".zome.json / .vef model)");
+        if (bytes.empty())
+            throw InvalidInputError(file_name + ": the file is empty");
+        const std::span<const uint8_t> data(reinterpret_cast<const uint8_t *>(bytes.data()), bytes.size());
+        PolygonSoup soup = read_mesh_buffer(data, file_name);
+        PreparedSurface prepared = prepare_surface(soup);
+        auto loaded = std::make_unique<LoadedSurface>();
+        loaded->mesh = prepared.mesh;
+        loaded->report = prepared.report;
+        loaded->projector = std::make_unique<SurfaceProjector>(prepared.mesh);
+        loaded->inside = std::make_unique<InsideTest>(*loaded->projector);
+        surface_ = std::move(loaded);
+        surface_name_ = file_name;
+        nlohmann::json out;
+        out["ok"] = true;
+        out["kind"] = "mesh";
+        out["report"] = nlohmann::json::parse(surface_report_json(surface_->report, file_name));
+        return out.dump();
+    });
+}
+
+std::string Session::load_model(const std::string &bytes, const std::string &file_name)
+{
+    return guarded([&] {
+        if (busy())
+            throw InvalidInputError("a run is in progress; cancel it first");
+        if (bytes.empty())
+            throw InvalidInputError(file_name + ": the file is empty");
+        ZomeModel m = read_model_buffer(bytes, file_name);
+        parts_list(m); // rejects struts that are not Zome vectors before the model is shown
+        set_model(std::move(m), "file");
+        return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
+    });
+}
+
+std::string Session::open_link(const std::string &link)
+{
+    return guarded([&] {
+        if (busy())
+            throw InvalidInputError("a run is in progress; cancel it first");
+        ZomeModel m = decode_share_link(link);
+        set_model(std::move(m), "link");
+        return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
+    });
+}
+
+std::string Session::estimate(int resolution)
+{
+    return guarded([&] {
+        if (!surface_)
+            throw InvalidInputError("no mesh loaded");
+        if (busy())
+            throw InvalidInputError("a run is in progress");
+        if (resolution < 2 || resolution > 256)
+            throw InvalidInputError("resolution must be between 2 and 256 cells");
+        const InitialModel z0 =
+            build_initial_model(surface_->mesh, surface_->is_inside(), z0_options(resolution, surface_->report.genus));
+        nlohmann::json out;
+        out["ok"] = true;
+        out["resolution"] = resolution;
+        out["nodes"] = z0.model.nodes.size();
+        out["struts"] = z0.model.struts.size();
+        out["valid"] = z0.report.valid;
+        out["genus"] = z0.report.topology.genus;
+        out["surface_genus"] = surface_->report.genus;
+        out["kept"] = z0.report.valid && z0.report.topology.genus == surface_->report.genus;
+        out["advice"] = z0.report.valid ? advice_for(*surface_, resolution, z0.report.topology.genus) : "";
+        out["seconds"] = z0.report.seconds;
+        return out.dump();
+    });
+}
+
+void Session::set_model(ZomeModel model, std::string source)
+{
+    std::lock_guard lock(model_mutex_);
+    model_ = std::move(model);
+    model_source_ = std::move(source);
+    model_version_.fetch_add(1);
+}
+
+ZomeModel Session::model() const
+{
+    std::lock_guard lock(model_mutex_);
+    return model_;
+}
+
+const TriangleMesh *Session::surface() const
+{
+    return surface_ ? &surface_->mesh : nullptr;
+}
+
+void Session::execute_run(const RunOptions &options, RunControl &control)
+{
+    Stopwatch clock;
+    try
+    {
+        const LoadedSurface &s = *surface_;
+        PipelineOptions po;
+        po.resolution = options.resolution;
+        po.initial_only = options.initial_only;
+        po.advisor_seconds = 3.0;
+        AnnealOptions &a = po.anneal;
+        a.seconds = options.seconds;
+        a.max_proposals = options.proposals;
+        a.threads = std::clamp(options.threads, 1, max_run_threads());
+        a.seed = options.seed;
+        a.target_nodes = static_cast<size_t>(options.target_nodes);
+        a.energy.w_distance = options.w_dist;
+        a.energy.w_orientation = options.w_orient;
+        a.energy.w_fairing = options.w_fair;
+        a.energy.w_complexity = options.w_complex;
+        a.progress_interval = 0.1;
+        control.update([&](RunProgress &p) {
+            p.state = RunState::Initial;
+            p.budget_seconds = options.proposals > 0 ? 0.0 : options.seconds;
+            p.threads = a.threads;
+            p.annealer = !options.initial_only;
+        });
+
+        double last_snapshot = -1.0;
+        PipelineCallbacks callbacks;
+        callbacks.cancel = &control.cancel_flag();
+        callbacks.initial = [&](const ZomeModel &z0) {
+            set_model(z0, "run");
+            control.update([&](RunProgress &p) {
+                p.state = options.initial_only ? RunState::Initial : RunState::Annealing;
+                p.nodes = z0.nodes.size();
+                p.struts = z0.struts.size();
+                p.seconds = clock.seconds();
+            });
+        };
+        callbacks.progress = [&](const AnnealProgress &ap, Annealer &annealer) {
+            // The model goes out a few times a second (the page draws at least two per second);
+            // a snapshot costs a copy of the mesh under the commit lock, so not on every report.
+            const double now = clock.seconds();
+            if (last_snapshot < 0.0 || now - last_snapshot >= 0.2 || ap.finished)
+            {
+                last_snapshot = now;
+                set_model(annealer.snapshot(), "run");
+            }
+            control.update([&](RunProgress &p) {
+                p.state = RunState::Annealing;
+                p.seconds = now;
+                p.fraction = ap.fraction;
+                p.temperature = ap.temperature;
+                p.energy = ap.energy.total;
+                p.best_energy = ap.best_energy;
+                p.proposals = ap.proposals;
+                p.commits = ap.commits;
+                p.nodes = ap.nodes;
+                p.struts = ap.struts;
+            });
+        };
+
+        PipelineResult result = run_pipeline(s.mesh, s.report.genus, po, callbacks);
+        const size_t nodes = result.model.nodes.size(), struts = result.model.struts.size();
+        set_model(std::move(result.model), "run");
+        control.update([&](RunProgress &p) {
+            p.seconds = clock.seconds();
+            p.nodes = nodes;
+            p.struts = struts;
+            if (result.anneal)
+            {
+                p.energy = result.model_energy.total;
+                p.commits = result.anneal->stats.commits;
+                p.proposals = result.anneal->stats.proposals;
+            }
+            p.fraction = 1.0;
+            p.valid = result.model_valid;
+            p.genus = result.model_genus;
+            p.surface_genus = result.surface_genus;
+            p.note = result.advice;
+            if (!result.model_valid)
+                p.note += (p.note.empty() ? "" : " ") + std::string("Model check: ") + result.validation;
+            p.state = control.cancel_requested() ? RunState::Cancelled : RunState::Done;
+        });
+    }
+    catch (const std::exception &e)
+    {
+        const std::string what = e.what();
+        control.update([&](RunProgress &p) {
+            p.seconds = clock.seconds();
+            p.error = what;
+            p.state = RunState::Failed;
+        });
+    }
+}
+
+std::string Session::start(const std::string &options_json)
+{
+    return guarded([&] {
+        if (!surface_)
+            throw InvalidInputError("load a mesh first (this model came from a file or link; drop its mesh to run again)");
+        if (busy())
+            throw InvalidInputError("a run is in progress");
+        const RunOptions options = parse_run_options(options_json);
+        if (run_thread_.joinable())
+            run_thread_.join();
+        run_ = std::make_unique<RunControl>();
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+        execute_run(options, *run_);
+#else
+        // The worker's own thread must return to its event loop: it receives Cancel, and
+        // pthread_create from another thread is completed there.
+        run_->update([](RunProgress &p) { p.state = RunState::Initial; });
+        run_thread_ = std::thread([this, options] { execute_run(options, *run_); });
+#endif
+        return nlohmann::json{{"ok", true}}.dump();
+    });
+}
+
+std::string Session::run_blocking(const std::string &options_json,
+                                  const std::function<bool(const RunProgress &)> &report, double interval)
+{
+    return guarded([&] {
+        if (!surface_)
+            throw InvalidInputError("load a mesh first");
+        if (busy())
+            throw InvalidInputError("a run is in progress");
+        const RunOptions options = parse_run_options(options_json);
+        if (run_thread_.joinable())
+            run_thread_.join();
+        run_ = std::make_unique<RunControl>();
+        run_->set_reporter(report, interval);
+        execute_run(options, *run_);
+        report(run_->get());
+        return nlohmann::json{{"ok", true}}.dump();
+    });
+}
+
+void Session::cancel()
+{
+    if (run_)
+        run_->request_cancel();
+}
+
+RunProgress Session::progress() const
+{
+    return run_ ? run_->get() : RunProgress{};
+}
+
+std::string Session::parts() const
+{
+    return guarded([&] {
+        const ZomeModel m = model();
+        if (m.nodes.empty())
+            throw InvalidInputError("no model yet");
+        return parts_report_json(parts_list(m), {});
+    });
+}
+
+std::string Session::export_model(const std::string &file_name) const
+{
+    const ZomeModel m = model();
+    if (m.nodes.empty())
+        throw InvalidInputError("no model yet");
+    const std::string ext = extension_of(file_name);
+    if (ext == ".obj" || ext == ".mtl")
+    {
+        const size_t dot = file_name.find_last_of('.');
+        const ObjExport obj = write_obj(m, file_name.substr(0, dot) + ".mtl");
+        return ext == ".obj" ? obj.obj : obj.mtl;
+    }
+    return write_model_buffer(m, file_name);
+}
+
+std::string Session::link() const
+{
+    return guarded([&] {
+        const ZomeModel m = model();
+        if (m.nodes.empty())
+            throw InvalidInputError("no model yet");
+        return nlohmann::json{{"ok", true}, {"link", encode_share_link(m)}}.dump();
+    });
+}
+
+std::string Session::summary() const
+{
+    return guarded([&] {
+        ZomeModel m;
+        std::string source;
+        {
+            std::lock_guard lock(model_mutex_);
+            m = model_;
+            source = model_source_;
+        }
+        nlohmann::json out;
+        out["ok"] = true;
+        out["source"] = source;
+        out["balls"] = m.nodes.size();
+        out["struts"] = m.struts.size();
+        out["faces"] = m.faces.size();
+        nlohmann::json by_kind = nlohmann::json::object();
+        for (const auto &s : m.struts)
+        {
+            const int id = vector_id_of(m.nodes[s[1]] - m.nodes[s[0]]);
+            if (id >= 0)
+                by_kind[std::string(kind_info(vector_kind(id)).name)] =
+                    by_kind.value(std::string(kind_info(vector_kind(id)).name), 0) + 1;
+        }
+        out["by_kind"] = by_kind;
+        if (!m.faces.empty())
+        {
+            const ValidationReport check = validate(from_model(m));
+            out["valid"] = check.ok();
+            out["genus"] = check.genus;
+            out["validation"] = check.message();
+        }
+        else
+        {
+            out["valid"] = nullptr;
+        }
+        out["stats"] = nlohmann::json::parse(m.stats_json, nullptr, false);
+        if (out["stats"].is_discarded())
+            out["stats"] = nlohmann::json::object();
+        out["surface"] = surface_ ? surface_name_ : "";
+        return out.dump();
+    });
+}
+
+} // namespace zomeify::web

@@ -1,0 +1,92 @@
+#pragma once
+//! \file session.h
+//! The page's whole state in the worker: the input surface, the current model, and at most one
+//! run. Every method turns bad input into a one-line message and leaves the current model as it
+//! was. Results go out as JSON text; bulk data (snapshots, exports) through the bindings as typed
+//! arrays. No embind here, so the same class can be exercised natively.
+
+#include <atomic>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "core/geom/triangle_mesh.h"
+#include "core/surface/prepare.h"
+#include "core/zome/model.h"
+#include "wasm/run_progress.h"
+
+namespace zomeify::web
+{
+
+struct LoadedSurface;
+
+class Session
+{
+  public:
+    Session();
+    ~Session();
+    Session(const Session &) = delete;
+    Session &operator=(const Session &) = delete;
+
+    //! Reads and repairs a mesh file ({ok, kind:"mesh", report} or {ok:false, error}). On success
+    //! the surface is replaced; the current model stays until a run replaces it.
+    std::string load_mesh(const std::string &bytes, const std::string &file_name);
+    //! Reads a model file (.zome.json, .json, .vef) and makes it the current model.
+    std::string load_model(const std::string &bytes, const std::string &file_name);
+    //! Opens a share link (whole URL, #m=… or m=…) as the current model.
+    std::string open_link(const std::string &link);
+
+    //! Z0 at `resolution` cells without keeping it: {nodes, struts, genus, surface_genus, kept,
+    //! advice}. Used by the page's live estimate.
+    std::string estimate(int resolution);
+
+    //! Starts a run (Z0, then annealing) on its own thread and returns at once; poll() reports.
+    //! In the single-threaded build use run_blocking().
+    std::string start(const std::string &options_json);
+    //! The same run on the calling thread; `report` is called about every `interval` seconds
+    //! and may ask to stop by returning true.
+    std::string run_blocking(const std::string &options_json, const std::function<bool(const RunProgress &)> &report,
+                             double interval);
+    //! Asks a run to stop; it keeps the best model found so far.
+    void cancel();
+    //! Progress of the current or last run.
+    RunProgress progress() const;
+
+    //! The current model (a copy; during a run the latest snapshot, else the finished model).
+    ZomeModel model() const;
+    //! A counter that changes whenever model() changes.
+    uint64_t model_version() const { return model_version_.load(); }
+    //! The input surface, if a mesh is loaded.
+    const TriangleMesh *surface() const;
+
+    //! The parts list and kit plan of the current model (parts_report_json) or {ok:false,error}.
+    std::string parts() const;
+    //! The current model in the format of `file_name`'s extension (.vef .glb .obj .mtl .zome.json .csv).
+    //! Throws InvalidInputError for an unknown format or when there is no model.
+    std::string export_model(const std::string &file_name) const;
+    //! The share-link fragment m=1.… of the current model, or {ok:false,error}.
+    std::string link() const;
+    //! {balls, struts, faces, by_kind{...}, genus?, valid, source, stats{}}.
+    std::string summary() const;
+
+  private:
+    void execute_run(const RunOptions &options, RunControl &control);
+    void set_model(ZomeModel model, std::string source);
+    bool busy() const;
+
+    std::unique_ptr<LoadedSurface> surface_;
+    std::string surface_name_;
+
+    mutable std::mutex model_mutex_;
+    ZomeModel model_;
+    std::string model_source_ = "none";
+    std::atomic<uint64_t> model_version_{0};
+
+    std::unique_ptr<RunControl> run_;
+    std::thread run_thread_;
+};
+
+} // namespace zomeify::web

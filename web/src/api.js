@@ -1,0 +1,47 @@
+// window.zomeify: a small scripting API over the page (documented in web/README.md). Every call
+// returns a promise; failures reject with the same one-line message the page shows.
+export function installApi(app, { ready, info }) {
+  const api = {
+    /** Resolves with {threaded, maxThreads, crossOriginIsolated} once the first model is shown. */
+    ready,
+    info,
+    /** A File (or {name, bytes: ArrayBuffer|Uint8Array}); {run: true} starts a run afterwards. */
+    async load(file, options = {}) {
+      const result = file instanceof Blob
+        ? await app.loadFile(file, options)
+        : await app.loadBytes(file.name, file.bytes instanceof ArrayBuffer ? file.bytes : file.bytes.slice().buffer, options);
+      if (result.ok === false) throw new Error(result.error);
+      return result;
+    },
+    async loadUrl(url, options = {}) {
+      const result = await app.loadUrl(url, options);
+      if (result.ok === false) throw new Error(result.error);
+      return result;
+    },
+    /** Runs with RunOptions (web/src/protocol.js); resolves with the final progress. */
+    run: (options) => app.run(options),
+    cancel: () => app.cancel(),
+    setOptions: (options) => app.controls.set(options),
+    options: () => app.controls.get(),
+    /** 'running' or 'idle'. */
+    state: () => (app.running ? 'running' : 'idle'),
+    progress: () => app.lastProgress,
+    summary: () => app.bridge.summary(),
+    parts: () => app.bridge.parts(),
+    /** The page's address with the model in its fragment (#m=1.…). */
+    shareLink: () => app.shareLink({ copy: false }),
+    openLink: async (link) => {
+      const result = await app.openLink(link);
+      if (!result.ok) throw new Error(result.error);
+      return result;
+    },
+    /** {name, bytes: Uint8Array} of an export: .vef .glb .obj .mtl .zome.json .csv */
+    exportModel: (name) => app.bridge.exportModel(name),
+    lastError: () => app.lastError,
+    /** Fractions of the canvas in each strut colour (a pixel check of the rendering). */
+    colourCoverage: () => app.viewer.colourCoverage(),
+    fit: () => app.viewer.fit(),
+  };
+  window.zomeify = api;
+  return api;
+}

@@ -1,0 +1,163 @@
+// The page's state and the actions every input leads to (UI, drop, links, window.zomeify): load
+// a file, run, cancel, open a link, refresh the results. Failures become one status line and
+// never replace the model on screen.
+import { Event } from './protocol.js';
+import { SAMPLES, DEFAULT_SAMPLE, sampleUrl, fetchBytes } from './samples.js';
+import { pageUrlWith, copyText } from './share_link.js';
+
+export class App {
+  constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl }) {
+    Object.assign(this, { bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl });
+    this.running = false;
+    this.currentName = 'model';
+    this.fitNext = true;
+    this.lastError = null;
+    this.lastProgress = null;
+    bridge.on(Event.SNAPSHOT, ({ snapshot }) => {
+      this.viewer.setModel(snapshot, { fit: this.fitNext });
+      this.fitNext = false;
+    });
+    bridge.on(Event.PROGRESS, ({ progress }) => {
+      this.lastProgress = progress;
+      this.plot.update(progress);
+    });
+  }
+
+  fail(message) {
+    this.lastError = message;
+    this.status.error(message);
+  }
+
+  /** Loads mesh or model bytes; returns {ok, kind?, error?}. `run` starts a run after a mesh. */
+  async loadBytes(name, bytes, { run = false } = {}) {
+    if (this.running) {
+      this.fail(`${name}: a run is in progress; cancel it first`);
+      return { ok: false, error: this.lastError };
+    }
+    let result;
+    this.fitNext = true;
+    try {
+      result = await this.bridge.load(name, bytes);
+    } catch (e) {
+      this.fitNext = false;
+      this.fail(e.message.startsWith(name) ? e.message : `${name}: ${e.message}`);
+      return { ok: false, error: this.lastError };
+    }
+    this.lastError = null;
+    this.currentName = name.replace(/\.(zome\.json|json|vef|obj|stl|ply|off|gltf|glb)$/i, '') || 'model';
+    if (result.kind === 'mesh') {
+      this.fitNext = true;
+      const r = result.report;
+      this.viewer.setSurface(await this.bridge.surface());
+      this.surfaceEl.textContent = `${name}: ${r.vertices} vertices, ${r.faces} triangles, genus ${r.genus}` +
+        (r.repaired?.length ? ` (repaired: ${r.repaired.join('; ')})` : '');
+      this.status.note(`${name} loaded.`);
+      this.controls.scheduleEstimate();
+      if (run) return { ...result, run: await this.run() };
+    } else {
+      this.status.note(`${name}: model loaded.`);
+      await this.refreshResults();
+    }
+    return result;
+  }
+
+  async loadFile(file, options) {
+    return this.loadBytes(file.name, await file.arrayBuffer(), options);
+  }
+
+  async loadUrl(url, options) {
+    const name = decodeURIComponent(new URL(url, document.baseURI).pathname.split('/').pop() || 'mesh');
+    let bytes;
+    try {
+      bytes = await fetchBytes(url);
+    } catch (e) {
+      this.fail(`${name}: could not fetch it (${e.message})`);
+      return { ok: false, error: this.lastError };
+    }
+    return this.loadBytes(name, bytes, options);
+  }
+
+  /** Shows a bundled sample: its mesh (ready to run again) and its precomputed finished model. */
+  async showSample(id = DEFAULT_SAMPLE) {
+    const sample = SAMPLES.find((s) => s.id === id) || SAMPLES[0];
+    const [mesh, model] = await Promise.all([
+      fetchBytes(sampleUrl(sample.mesh)), fetchBytes(sampleUrl(sample.id + '.zome.json')).catch(() => null),
+    ]);
+    if (model) await this.loadBytes(sample.id + '.zome.json', model);
+    await this.loadBytes(sample.mesh, mesh);
+    this.controls.set({ resolution: sample.resolution });
+    this.status.note(`Sample: ${sample.label} (${sample.credit}). Drop your own mesh anywhere, or press Run.`);
+    if (!model) await this.run();
+  }
+
+  async openLink(link) {
+    this.fitNext = true;
+    try {
+      await this.bridge.openLink(link);
+    } catch (e) {
+      this.fitNext = false;
+      this.fail(`share link: ${e.message}`);
+      return { ok: false, error: this.lastError };
+    }
+    this.lastError = null;
+    this.currentName = 'shared-model';
+    this.status.note('Model from the share link (not recomputed).');
+    await this.refreshResults();
+    return { ok: true };
+  }
+
+  async run(options = {}) {
+    if (this.running) throw new Error('a run is in progress');
+    this.controls.set(options);
+    const opts = this.controls.get();
+    this.running = true;
+    this.controls.setRunning(true);
+    this.plot.reset();
+    this.status.note('Running…');
+    let final;
+    try {
+      final = await this.bridge.run(opts);
+    } catch (e) {
+      final = { state: 'failed', error: e.message };
+    } finally {
+      this.running = false;
+      this.controls.setRunning(false);
+    }
+    this.lastProgress = final;
+    if (final.state === 'failed') this.fail(`run: ${final.error}`);
+    else {
+      this.lastError = null;
+      const how = final.state === 'cancelled' ? 'Cancelled; kept the best model' : 'Finished';
+      this.status.note(`${how} in ${final.seconds.toFixed(1)} s. ${final.note || ''}`.trim());
+    }
+    await this.refreshResults();
+    return final;
+  }
+
+  async cancel() {
+    if (this.running) await this.bridge.cancel();
+  }
+
+  async refreshResults() {
+    try {
+      this.parts.show(await this.bridge.parts());
+      const s = await this.bridge.summary();
+      const kinds = Object.entries(s.by_kind).map(([k, n]) => `${k} ${n}`).join(', ');
+      const valid = s.valid === null ? '' : s.valid ? ` · valid, genus ${s.genus}` : ' · NOT valid';
+      this.summaryEl.textContent = `${s.balls} balls, ${s.struts} struts (${kinds})${valid}`;
+    } catch (e) {
+      this.parts.clear();
+      this.summaryEl.textContent = '';
+    }
+  }
+
+  async shareLink({ copy = true } = {}) {
+    const { link } = await this.bridge.link();
+    const url = pageUrlWith(link);
+    if (copy) {
+      const ok = await copyText(url);
+      this.status.note(ok ? `Share link copied (${url.length} characters).` : url);
+    }
+    return url;
+  }
+}

@@ -1,0 +1,83 @@
+// Entry point: builds the page's parts and wires them together.
+import { CoreBridge } from './bridge.js';
+import { Event } from './protocol.js';
+import { Viewer } from './viewer.js';
+import { Controls } from './controls.js';
+import { RunPlot } from './plot.js';
+import { PartsTable } from './parts_table.js';
+import { Downloads } from './downloads.js';
+import { Status } from './status.js';
+import { App } from './app.js';
+import { installApi } from './api.js';
+import { setupFileInput } from './file_input.js';
+import { SAMPLES } from './samples.js';
+import { linkFromLocation } from './share_link.js';
+
+const $ = (id) => document.getElementById(id);
+const status = new Status($('status'));
+const bridge = new CoreBridge();
+const viewer = new Viewer($('viewer'));
+const controls = new Controls(document, { estimate: (r) => bridge.estimate(r) });
+const plot = new RunPlot(document);
+let app = null;
+const parts = new PartsTable(document, { onHover: (kinds) => viewer.highlightKinds(kinds) });
+app = new App({ bridge, viewer, controls, plot, parts, status, summaryEl: $('summary'), surfaceEl: $('surface-info') });
+new Downloads(document, { bridge, status, baseName: () => app.currentName });
+
+let resolveReady, rejectReady;
+const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });
+ready.catch(() => {});
+const info = { crossOriginIsolated: self.crossOriginIsolated === true, threaded: false, maxThreads: 1 };
+installApi(app, { ready, info });
+
+bridge.on(Event.FATAL, ({ error }) => {
+  status.error(`The core could not start: ${error}`);
+  rejectReady(new Error(error));
+});
+
+$('run').addEventListener('click', () => app.run().catch((e) => status.error(e.message)));
+$('cancel').addEventListener('click', () => app.cancel());
+$('share').addEventListener('click', () => app.shareLink().catch((e) => status.error(e.message)));
+$('show-faces').addEventListener('change', (e) => viewer.setFacesVisible(e.target.checked));
+$('show-surface').addEventListener('change', (e) => viewer.setSurfaceVisible(e.target.checked));
+$('fit').addEventListener('click', () => viewer.fit());
+setupFileInput({
+  dropTarget: document.body, picker: $('file'), overlay: $('drop-overlay'),
+  onFile: (file) => app.loadFile(file, { run: $('autorun').checked }),
+});
+for (const s of SAMPLES) {
+  const b = document.createElement('button');
+  b.textContent = s.label;
+  b.title = s.credit;
+  b.addEventListener('click', () => app.showSample(s.id).catch((e) => status.error(e.message)));
+  $('samples').append(b);
+}
+window.addEventListener('hashchange', () => {
+  const link = linkFromLocation();
+  if (link && !app.running) app.openLink(link);
+});
+
+async function boot() {
+  const started = await bridge.start();
+  Object.assign(info, started);
+  controls.setMaxThreads(started.maxThreads);
+  if (!info.crossOriginIsolated) {
+    $('fallback-note').hidden = false;
+  }
+  const link = linkFromLocation();
+  if (link) {
+    const opened = await app.openLink(link);
+    if (!opened.ok) {
+      await app.showSample();
+      app.fail(opened.error); // the sample is shown, but the user must see why their link was not
+    }
+  } else {
+    await app.showSample();
+  }
+  resolveReady({ ...info });
+}
+
+boot().catch((e) => {
+  status.error(`The page could not start: ${e.message}`);
+  rejectReady(e);
+});

@@ -1,0 +1,146 @@
+// The core worker: owns the wasm module and its Session, answers the requests of protocol.js.
+// Threaded build: a run lives in a pthread, so this thread stays free to receive Cancel and to
+// poll progress. Single-threaded build: the run blocks this thread and reports through a callback.
+import { Request, Event } from '../protocol.js';
+
+const POLL_MS = 100;      // progress events
+const SNAPSHOT_MS = 250;  // model updates during a run (≥ 2 per second)
+
+let core = null;
+let session = null;
+let threaded = false;
+let running = false;
+let sentVersion = -1;
+
+function post(message, transfer = []) {
+  self.postMessage(message, transfer);
+}
+
+function parse(json) {
+  const value = JSON.parse(json);
+  if (value && value.ok === false) throw new Error(value.error);
+  return value;
+}
+
+function snapshotMessage() {
+  const s = session.snapshot();
+  sentVersion = s.version;
+  return [s, [s.positions.buffer, s.struts.buffer, s.kinds.buffer, s.triangles.buffer]];
+}
+
+function postSnapshot() {
+  const [s, transfer] = snapshotMessage();
+  post({ type: Event.SNAPSHOT, snapshot: s }, transfer);
+}
+
+function maybePostSnapshot() {
+  if (session.modelVersion() !== sentVersion) postSnapshot();
+}
+
+async function init({ wasmBase, threaded: wantThreads }) {
+  threaded = wantThreads;
+  const file = threaded ? 'zomeify_web.mjs' : 'zomeify_web_st.mjs';
+  const { default: createZomeify } = await import(/* @vite-ignore */ wasmBase + file);
+  core = await createZomeify({
+    locateFile: (p) => wasmBase + p,
+    mainScriptUrlOrBlob: wasmBase + file,
+    print: (t) => console.log('[core]', t),
+    printErr: (t) => console.warn('[core]', t),
+  });
+  session = new core.Session();
+  return { threaded: core.threadedBuild(), maxThreads: core.maxThreads() };
+}
+
+function runThreaded(options) {
+  parse(session.start(JSON.stringify(options)));
+  running = true;
+  return new Promise((resolve) => {
+    let lastSnapshot = 0;
+    const timer = setInterval(() => {
+      const progress = JSON.parse(session.progress());
+      post({ type: Event.PROGRESS, progress });
+      const now = performance.now();
+      const finished = ['done', 'cancelled', 'failed'].includes(progress.state);
+      if (finished || now - lastSnapshot >= SNAPSHOT_MS) {
+        lastSnapshot = now;
+        maybePostSnapshot();
+      }
+      if (finished) {
+        clearInterval(timer);
+        running = false;
+        resolve(progress);
+      }
+    }, POLL_MS);
+  });
+}
+
+function runBlocking(options) {
+  running = true;
+  let progress = null;
+  try {
+    parse(session.runBlocking(JSON.stringify(options), (json) => {
+      progress = JSON.parse(json);
+      post({ type: Event.PROGRESS, progress });
+      maybePostSnapshot();
+      return false; // this thread cannot receive Cancel while it runs
+    }, SNAPSHOT_MS / 1000));
+  } finally {
+    running = false;
+  }
+  maybePostSnapshot();
+  return JSON.parse(session.progress());
+}
+
+const handlers = {
+  [Request.INIT]: init,
+  [Request.LOAD]: ({ name, bytes }) => {
+    const result = parse(session.loadMesh(new Uint8Array(bytes), name));
+    if (result.kind === 'model') postSnapshot();
+    return result;
+  },
+  [Request.OPEN_LINK]: ({ link }) => {
+    const result = parse(session.openLink(link));
+    postSnapshot();
+    return result;
+  },
+  [Request.ESTIMATE]: ({ resolution }) => parse(session.estimate(resolution)),
+  [Request.RUN]: ({ options }) => {
+    if (running) throw new Error('a run is in progress');
+    return threaded ? runThreaded(options) : runBlocking(options);
+  },
+  [Request.CANCEL]: () => {
+    session.cancel();
+    return {};
+  },
+  [Request.SNAPSHOT]: () => snapshotMessage(),
+  [Request.SURFACE]: () => {
+    const s = session.surface();
+    return s ? [s, [s.positions.buffer, s.triangles.buffer]] : null;
+  },
+  [Request.PARTS]: () => parse(session.parts()),
+  [Request.EXPORT]: ({ name }) => {
+    const out = session.exportModel(name);
+    if (!out.ok) throw new Error(out.error);
+    return [{ name, bytes: out.bytes }, [out.bytes.buffer]];
+  },
+  [Request.LINK]: () => parse(session.link()),
+  [Request.SUMMARY]: () => parse(session.summary()),
+};
+
+// Handlers that return [result, transferList] hand their buffers over instead of copying.
+const transfers = new Set([Request.SNAPSHOT, Request.SURFACE, Request.EXPORT]);
+
+self.onmessage = async ({ data }) => {
+  const { id, type } = data;
+  try {
+    if (!handlers[type]) throw new Error(`unknown request '${type}'`);
+    if (type !== Request.INIT && !session) throw new Error('the core is not ready yet');
+    const value = await handlers[type](data);
+    if (transfers.has(type) && Array.isArray(value)) post({ id, type: 'reply', ok: true, result: value[0] }, value[1]);
+    else post({ id, type: 'reply', ok: true, result: value });
+  } catch (e) {
+    const message = e instanceof Error ? e.message : typeof e === 'number' ? `internal error (${e})` : String(e);
+    post({ id, type: 'reply', ok: false, error: message });
+    if (type === Request.INIT) post({ type: Event.FATAL, error: message });
+  }
+};
