@@ -1,17 +1,10 @@
 #!/usr/bin/env bash
-# What `npm start` shows until the web page lands: the CLI on the bundled sample model.
+# `npm start`: builds what is missing (native CLI, browser modules, samples, vite bundle) and
+# serves the page on localhost with COOP/COEP, printing its address. PORT=… picks the port.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 [ -x build/native/core/cli/zomeify ] || bash tests/build.sh native
-sample=tests/data/samples/icosahedron.zome.json
-echo "\$ zomeify parts $sample"
-build/native/core/cli/zomeify parts "$sample"
-if [ -f ../shared/data/vef/bunny.vef ]; then
-  echo; echo "\$ zomeify parts ../shared/data/vef/bunny.vef   # the paper's Zome bunny"
-  build/native/core/cli/zomeify parts ../shared/data/vef/bunny.vef
-fi
-if [ -f ../shared/data/meshes/torus.obj ]; then
-  echo; echo "\$ zomeify run ../shared/data/meshes/torus.obj --initial-only --resolution 12 -o build/torus-z0.zome.json"
-  build/native/core/cli/zomeify run ../shared/data/meshes/torus.obj --initial-only --resolution 12 -o build/torus-z0.zome.json
-fi
-echo; echo "The CLI is build/native/core/cli/zomeify (zomeify --help lists its commands)."
+bash web/build.sh --dist
+export PORT=${PORT:-8080}
+echo "Open the address below in Chromium, Firefox or Safari (Ctrl+C stops the server)."
+exec env ROOT=dist node web/server.mjs

@@ -13,6 +13,7 @@ export class Controls {
     this.maxThreads = 1;
     this.estimateTimer = null;
     this.estimateSerial = 0;
+    this.initialOnly = false; // API only: stop after Z0
 
     this.el('resolution').addEventListener('input', () => {
       this.el('resolution-value').textContent = this.el('resolution').value;
@@ -60,6 +61,8 @@ export class Controls {
     if (o.target_nodes !== undefined) this.el('target').value = o.target_nodes || '';
     if (o.threads !== undefined) this.el('threads').value = String(o.threads);
     if (o.seed !== undefined) this.el('seed').value = o.seed;
+    if (o.proposals !== undefined) this.el('proposals').value = o.proposals || '';
+    if (o.initial_only !== undefined) this.initialOnly = Boolean(o.initial_only);
     for (const [k, v] of Object.entries(o.weights || {})) this.el('w-' + k).value = v;
   }
 
@@ -76,6 +79,8 @@ export class Controls {
       target_nodes: num('target', 0),
       threads: Math.min(threads, this.maxThreads),
       seed: num('seed', 1),
+      proposals: num('proposals', 0),
+      initial_only: this.initialOnly,
       weights: Object.fromEntries(Object.keys(DEFAULTS.weights).map((k) => [k, num('w-' + k, DEFAULTS.weights[k])])),
     };
   }

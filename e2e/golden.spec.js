@@ -1,0 +1,34 @@
+// Dropping (and picking) the shared torus and running with a fixed seed and one thread gives the
+// node and strut counts of the native CLI with the same options, and the model is valid.
+import fs from 'node:fs';
+import path from 'node:path';
+import { test, expect } from '@playwright/test';
+import { MESHES } from './support/paths.js';
+import { goldenRun } from './support/cli.js';
+import { openPage, summary, dropFile, pickFile, waitIdle, waitRunning, expectNoPageErrors } from './support/page.js';
+
+const torus = path.join(MESHES, 'torus.obj');
+let golden;
+
+test.beforeAll(() => {
+  golden = goldenRun(torus, { resolution: 8, proposals: 20000, seed: 7 });
+});
+
+for (const [how, put] of [['drag and drop', dropFile], ['file picker', pickFile]]) {
+  test(`torus by ${how}: same counts as the CLI (seed 7, 1 thread)`, async ({ page }) => {
+    const { errors } = await openPage(page);
+    await page.evaluate((o) => window.zomeify.setOptions(o), golden.options);
+    await put(page, 'torus.obj', fs.readFileSync(torus));
+    await waitRunning(page);
+    await waitIdle(page);
+    const s = await summary(page);
+    const progress = await page.evaluate(() => window.zomeify.progress());
+    expect(progress.state).toBe('done');
+    expect(s.source).toBe('run');
+    expect({ balls: s.balls, struts: s.struts, faces: s.faces })
+      .toEqual({ balls: golden.balls, struts: golden.struts, faces: golden.faces });
+    expect(s.valid, s.validation).toBe(true);
+    expect(s.genus).toBe(1);
+    await expectNoPageErrors(errors);
+  });
+}

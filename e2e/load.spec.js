@@ -1,0 +1,18 @@
+// The page loads cross-origin isolated with the threaded build and shows the finished sample.
+import { test, expect } from '@playwright/test';
+import { openPage, summary, expectNoPageErrors } from './support/page.js';
+
+test('cross-origin isolated, threaded build, sample model shown within 3 s', async ({ page }) => {
+  const { info, ms, errors } = await openPage(page);
+  expect(info.crossOriginIsolated).toBe(true);
+  expect(info.threaded).toBe(true);
+  expect(info.maxThreads).toBeGreaterThan(1);
+  const s = await summary(page);
+  expect(s.balls).toBeGreaterThan(0);
+  expect(s.struts).toBeGreaterThan(0);
+  expect(s.source).toBe('file'); // the precomputed sample, not a run
+  expect(ms, `time until the sample model was shown: ${ms} ms`).toBeLessThan(3000);
+  await expect(page.locator('#fallback-note')).toBeHidden();
+  await expect(page.locator('#parts-table tr')).not.toHaveCount(0);
+  await expectNoPageErrors(errors);
+});
