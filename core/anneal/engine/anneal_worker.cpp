@@ -1,0 +1,270 @@
+// One annealing thread (annealer.h explains the step). The only shared writes happen in the
+// commit section (under commit_mutex) or while every other worker is parked in the barrier.
+#include <exception>
+#include <functional>
+#include <optional>
+
+#include "core/anneal/engine/annealer_state.h"
+#include "core/anneal/proposal.h"
+
+namespace zomeify {
+
+namespace {
+
+// Counters are flushed to the shared atomics, the clock read and T recomputed once per batch.
+constexpr uint64_t kBatch = 64;
+
+struct Additions
+{
+    size_t nodes = 0, edges = 0, faces = 0;
+};
+
+// What apply_proposal() appends (an upper bound for edges: faces create the struts they miss).
+Additions additions(const LocalChange& c) noexcept
+{
+    Additions a{c.added_nodes().size(), c.added_struts().size(), c.added_faces().size()};
+    for (const NewFace& f : c.added_faces()) a.edges += f.size;
+    return a;
+}
+
+// A new position may have been taken by another thread's commit since propose() looked it up
+// (positions are global, not covered by claims). Checked under the commit lock.
+bool positions_still_free(const ZomeMesh& mesh, const LocalChange& c) noexcept
+{
+    for (const ZVec& p : c.added_nodes())
+    {
+        const Vertex there = mesh.find_vertex(p);
+        if (!there.is_valid())
+            continue;
+        bool leaving = false;
+        for (const Vertex& r : c.removed_nodes()) leaving = leaving || r == there;
+        if (!leaving)
+            return false;
+    }
+    return true;
+}
+
+class Worker
+{
+public:
+    Worker(AnnealerState& state, int index, WorkerTotals& totals, const std::function<void()>& report)
+        : s_(state), index_(index), totals_(totals.stats), report_(report),
+          rng_(Rng::for_stream(state.options.seed, static_cast<uint64_t>(index))),
+          shared_(state.options.threads > 1), by_proposals_(state.options.max_proposals > 0)
+    {
+        make_claims();
+    }
+
+    void run()
+    {
+        temperature_ = s_.schedule.temperature(0.0);
+        uint64_t iteration = 0;
+        while (!s_.stop.load(std::memory_order_acquire))
+        {
+            if (s_.barrier.requested())
+            {
+                pause();
+                continue;
+            }
+            if (by_proposals_ && !shared_ && own_proposals_ >= s_.options.max_proposals)
+            {
+                s_.request_stop();
+                break;
+            }
+            if (iteration++ % kBatch == 0 && !checkpoint())
+                break;
+            step();
+        }
+        flush();
+    }
+
+private:
+    void make_claims()
+    {
+        claims_.emplace(shared_ ? s_.tags.get() : nullptr, static_cast<uint32_t>(index_ + 1));
+        tags_generation_ = s_.tags_generation;
+    }
+
+    void pause()
+    {
+        flush();
+        claims_->release_all();
+        s_.barrier.arrive(s_.stop, [this] {
+            std::lock_guard lock(s_.commit_mutex);
+            s_.make_room();
+        });
+        if (tags_generation_ != s_.tags_generation)
+            make_claims();
+    }
+
+    // Budget, temperature and progress, once per batch. False when the budget is used.
+    bool checkpoint()
+    {
+        flush();
+        double fraction = 0.0;
+        if (by_proposals_)
+        {
+            const uint64_t done = shared_ ? s_.proposals.load(std::memory_order_relaxed) : own_proposals_;
+            if (done >= s_.options.max_proposals)
+            {
+                s_.request_stop();
+                return false;
+            }
+            fraction = static_cast<double>(done) / static_cast<double>(s_.options.max_proposals);
+        }
+        else
+        {
+            const double elapsed = s_.clock.seconds();
+            if (elapsed >= s_.options.seconds)
+            {
+                s_.request_stop();
+                return false;
+            }
+            fraction = elapsed / s_.options.seconds;
+        }
+        temperature_ = s_.schedule.temperature(fraction);
+        if (index_ == 0)
+        {
+            s_.temperature.store(temperature_, std::memory_order_relaxed);
+            if (report_ && since_report_.seconds() >= s_.options.progress_interval)
+            {
+                report_();
+                since_report_.restart();
+            }
+        }
+        return true;
+    }
+
+    void step()
+    {
+        const uint32_t published = s_.published_vertices.load(std::memory_order_acquire);
+        if (published == 0)
+            return;
+        const Vertex seed(static_cast<MeshIndex>(rng_.below(published)));
+        if (!claims_->take(seed))
+        {
+            ++totals_.busy_seeds;
+            return;
+        }
+        if (s_.mesh.is_deleted(seed))
+        {
+            ++totals_.dead_seeds;
+            claims_->release_all();
+            return;
+        }
+        const auto kind = static_cast<OperatorKind>(rng_.below(kOperatorKinds));
+        OperatorCounts& counts = totals_.per_operator[static_cast<size_t>(kind)];
+        ++counts.proposed;
+        ++own_proposals_;
+        ++unflushed_proposals_;
+        if (!propose(kind, s_.mesh, seed, rng_, *claims_, proposal_))
+        {
+            ++totals_.rejections[static_cast<size_t>(proposal_.rejection)];
+            claims_->release_all();
+            return;
+        }
+        const EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change);
+        if (!delta.ok())
+        {
+            ++totals_.rejections[static_cast<size_t>(Rejection::Overflow)];
+            claims_->release_all();
+            return;
+        }
+        ++counts.valid;
+        ++unflushed_valid_;
+        // Drawn outside the lock and for every valid proposal, so the random stream does not
+        // depend on the outcome.
+        const double u = rng_.uniform01();
+        if (commit(delta, u))
+        {
+            ++counts.accepted;
+            ++unflushed_commits_;
+        }
+        claims_->release_all();
+    }
+
+    bool commit(const EnergyDelta& delta, double u)
+    {
+        std::lock_guard lock(s_.commit_mutex);
+        if (!metropolis_accept(s_.energy.delta_energy(delta), temperature_, u))
+            return false;
+        const Additions add = additions(proposal_.change);
+        if (!s_.mesh.has_capacity_for(add.nodes, add.edges, add.faces) ||
+            s_.mesh.vertices_size() + add.nodes > s_.tags->capacity())
+        {
+            s_.barrier.request();
+            ++totals_.lost_races;
+            return false;
+        }
+        if (!positions_still_free(s_.mesh, proposal_.change))
+        {
+            ++totals_.lost_races;
+            return false;
+        }
+        apply_proposal(s_.mesh, proposal_);
+        s_.energy.commit(delta);
+        s_.published_vertices.store(static_cast<uint32_t>(s_.mesh.vertices_size()), std::memory_order_release);
+        if (!s_.has_room_for_any())
+            s_.barrier.request();
+        return true;
+    }
+
+    void flush()
+    {
+        if (unflushed_proposals_)
+            s_.proposals.fetch_add(unflushed_proposals_, std::memory_order_relaxed);
+        if (unflushed_valid_)
+            s_.valid_proposals.fetch_add(unflushed_valid_, std::memory_order_relaxed);
+        if (unflushed_commits_)
+            s_.commits.fetch_add(unflushed_commits_, std::memory_order_relaxed);
+        unflushed_proposals_ = unflushed_valid_ = unflushed_commits_ = 0;
+    }
+
+    AnnealerState& s_;
+    const int index_;
+    AnnealStats& totals_;
+    const std::function<void()>& report_;
+    Rng rng_;
+    const bool shared_, by_proposals_;
+    std::optional<Claims> claims_;
+    uint64_t tags_generation_ = 0;
+    Proposal proposal_;
+    double temperature_ = 0.0;
+    uint64_t own_proposals_ = 0;
+    uint64_t unflushed_proposals_ = 0, unflushed_valid_ = 0, unflushed_commits_ = 0;
+    Stopwatch since_report_;
+};
+
+} // namespace
+
+void run_worker(AnnealerState& state, int index, WorkerTotals& totals, const std::function<void()>& report_progress)
+{
+    const auto fail = [&state](const char* what) {
+        {
+            std::lock_guard lock(state.commit_mutex);
+            if (state.error.empty())
+                state.error = what;
+        }
+        state.request_stop();
+    };
+    try
+    {
+        Worker worker(state, index, totals, report_progress);
+        worker.run();
+    }
+    catch (const std::exception& e)
+    {
+        fail(e.what());
+    }
+    catch (...)
+    {
+        fail("unknown exception in an annealing thread");
+    }
+    // Leave in every case, so the others are never left waiting at the barrier.
+    state.barrier.leave([&state] {
+        std::lock_guard lock(state.commit_mutex);
+        state.make_room();
+    });
+}
+
+} // namespace zomeify

@@ -1,0 +1,308 @@
+// The Annealer's setup, T0, thread management and results (the per-thread loop is in
+// anneal_worker.cpp).
+#include "core/anneal/engine/annealer.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <system_error>
+#include <thread>
+#include <vector>
+
+#include "core/anneal/engine/annealer_state.h"
+#include "core/anneal/proposal.h"
+#include "core/base/errors.h"
+#include "core/mesh/model_convert.h"
+
+namespace zomeify {
+
+namespace {
+
+// Room reserved beyond the live elements: commits append and deletions are lazy, so the arrays
+// fill up; a synchronized pause compacts them when the room is used.
+size_t headroom(size_t live, size_t minimum) { return std::max(minimum, 4 * live); }
+
+int default_threads()
+{
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+    return 1;
+#else
+    return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1U, 64U));
+#endif
+}
+
+AnnealOptions resolve(AnnealOptions o, const ZomeMesh& mesh)
+{
+    if (mesh.n_vertices() == 0 || mesh.n_faces() == 0)
+        throw InvalidInputError("the annealer needs a non-empty closed Zome model");
+    if (o.max_proposals == 0 && !(std::isfinite(o.seconds) && o.seconds > 0.0))
+        throw InvalidInputError("the annealing time must be a positive number of seconds");
+    if (o.threads < 0 || o.threads > 64)
+        throw InvalidInputError("threads must be between 0 (automatic) and 64");
+    if (!(o.min_temperature > 0.0) || !std::isfinite(o.min_temperature))
+        throw InvalidInputError("the minimum temperature must be positive");
+    if (!(o.initial_temperature >= 0.0) || !std::isfinite(o.initial_temperature))
+        throw InvalidInputError("the initial temperature must be 0 (automatic) or positive");
+    if (!(o.progress_interval > 0.0))
+        o.progress_interval = 0.25;
+    if (o.threads == 0)
+        o.threads = default_threads();
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+    o.threads = 1;
+#endif
+    if (o.target_nodes == 0)
+        o.target_nodes = mesh.n_vertices();
+    o.energy.target_nodes = o.target_nodes;
+    return o;
+}
+
+// T0 = 0.1 · stdev(ΔE) over random valid proposals on the starting mesh (paper §5.3). One
+// thread, its own random stream: deterministic in the seed.
+double estimate_t0(const AnnealerState& s, int& valid)
+{
+    Rng rng = Rng::for_stream(s.options.seed, 0xFFFF);
+    Claims claims; // unshared: every claim succeeds
+    Proposal proposal;
+    DeltaSpread spread;
+    const auto samples = static_cast<uint64_t>(std::max(s.options.t0_samples, 0));
+    const uint64_t attempts = 50 * samples;
+    for (uint64_t i = 0; i < attempts && static_cast<uint64_t>(spread.count()) < samples; ++i)
+    {
+        const Vertex seed(static_cast<MeshIndex>(rng.below(s.mesh.vertices_size())));
+        const auto kind = static_cast<OperatorKind>(rng.below(kOperatorKinds));
+        if (s.mesh.is_deleted(seed) || !claims.take(seed))
+            continue;
+        if (propose(kind, s.mesh, seed, rng, claims, proposal))
+        {
+            const EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change);
+            if (delta.ok())
+                spread.add(s.energy.delta_energy(delta));
+        }
+        claims.release_all();
+    }
+    valid = spread.count();
+    return 0.1 * spread.stdev();
+}
+
+void add_counts(AnnealStats& into, const AnnealStats& from)
+{
+    for (int k = 0; k < kOperatorKinds; ++k)
+    {
+        into.per_operator[k].proposed += from.per_operator[k].proposed;
+        into.per_operator[k].valid += from.per_operator[k].valid;
+        into.per_operator[k].accepted += from.per_operator[k].accepted;
+    }
+    for (int r = 0; r < kRejectionKinds; ++r) into.rejections[r] += from.rejections[r];
+    into.busy_seeds += from.busy_seeds;
+    into.dead_seeds += from.dead_seeds;
+    into.lost_races += from.lost_races;
+}
+
+} // namespace
+
+AnnealerState::AnnealerState(ZomeMesh start, const SurfaceContext& ctx, const AnnealOptions& opts)
+    : context(ctx), options(resolve(opts, start)), mesh(std::move(start)), energy(mesh, ctx, options.energy),
+      start_terms(energy.terms()), barrier(options.threads)
+{
+    best_energy = start_terms.total;
+}
+
+void AnnealerState::make_room()
+{
+    mesh.garbage_collection();
+    const size_t nv = mesh.n_vertices(), ne = mesh.n_edges(), nf = mesh.n_faces();
+    const size_t vertex_room = nv + headroom(nv, 4096);
+    mesh.reserve(vertex_room, ne + headroom(ne, 16384), nf + headroom(nf, 8192));
+    if (!tags || tags->capacity() < vertex_room)
+    {
+        tags = std::make_unique<NodeTags>(vertex_room);
+        ++tags_generation;
+    }
+    published_vertices.store(static_cast<uint32_t>(mesh.vertices_size()), std::memory_order_release);
+}
+
+bool AnnealerState::has_room_for_any() const
+{
+    constexpr size_t kNodes = LocalChange::kMaxNodes;
+    constexpr size_t kEdges = LocalChange::kMaxStruts + 4 * LocalChange::kMaxFaces;
+    return mesh.has_capacity_for(kNodes, kEdges, LocalChange::kMaxFaces) &&
+           mesh.vertices_size() + kNodes <= tags->capacity();
+}
+
+double AnnealerState::fraction_now(uint64_t proposals_done) const noexcept
+{
+    if (!started.load())
+        return 0.0;
+    const double f = options.max_proposals > 0
+                         ? static_cast<double>(proposals_done) / static_cast<double>(options.max_proposals)
+                         : clock.seconds() / options.seconds;
+    return std::clamp(f, 0.0, 1.0);
+}
+
+AnnealProgress AnnealerState::progress_locked() const
+{
+    AnnealProgress p;
+    p.proposals = proposals.load(std::memory_order_relaxed);
+    p.valid_proposals = valid_proposals.load(std::memory_order_relaxed);
+    p.commits = commits.load(std::memory_order_relaxed);
+    p.elapsed_seconds = started.load() ? clock.seconds() : 0.0;
+    p.fraction = finished.load() ? 1.0 : fraction_now(p.proposals);
+    p.temperature = temperature.load(std::memory_order_relaxed);
+    p.energy = energy.terms();
+    p.best_energy = best_energy;
+    p.nodes = mesh.n_vertices();
+    p.struts = mesh.n_edges();
+    p.faces = mesh.n_faces();
+    p.acceptance_rate = p.valid_proposals ? static_cast<double>(p.commits) / static_cast<double>(p.valid_proposals) : 0.0;
+    p.finished = finished.load();
+    return p;
+}
+
+struct Annealer::Impl
+{
+    Impl(ZomeMesh mesh, const SurfaceContext& context, const AnnealOptions& options)
+        : state(std::move(mesh), context, options)
+    {
+    }
+    AnnealerState state;
+    ZomeModel best_model; // commit lock
+};
+
+Annealer::Annealer(ZomeMesh mesh, const SurfaceContext& context, const AnnealOptions& options)
+    : impl_(std::make_unique<Impl>(std::move(mesh), context, options))
+{
+}
+
+Annealer::Annealer(const ZomeModel& model, const SurfaceContext& context, const AnnealOptions& options)
+    : Annealer(from_model(model), context, options)
+{
+}
+
+Annealer::~Annealer() = default;
+
+void Annealer::cancel() noexcept
+{
+    impl_->state.cancelled.store(true);
+    impl_->state.request_stop();
+}
+
+AnnealProgress Annealer::progress() const
+{
+    std::lock_guard lock(impl_->state.commit_mutex);
+    return impl_->state.progress_locked();
+}
+
+ZomeModel Annealer::snapshot() const
+{
+    std::lock_guard lock(impl_->state.commit_mutex);
+    return to_model(impl_->state.mesh, impl_->state.context.transform());
+}
+
+const EnergyTerms& Annealer::start_energy() const noexcept { return impl_->state.start_terms; }
+
+const AnnealOptions& Annealer::options() const noexcept { return impl_->state.options; }
+
+AnnealResult Annealer::run(const ProgressCallback& progress)
+{
+    AnnealerState& s = impl_->state;
+    if (s.started.exchange(true))
+        throw std::logic_error("Annealer::run() called twice");
+    const ModelTransform& transform = s.context.transform();
+
+    const double t0 = s.options.initial_temperature > 0.0 ? s.options.initial_temperature : estimate_t0(s, s.t0_samples);
+    s.schedule = CoolingSchedule(t0, s.options.min_temperature);
+    s.temperature.store(s.schedule.initial());
+    s.make_room();
+    impl_->best_model = to_model(s.mesh, transform);
+
+    // Progress (and the best-model sample) on worker 0, i.e. this thread.
+    const std::function<void()> report = [this, &s, &progress, &transform] {
+        AnnealProgress p;
+        {
+            std::lock_guard lock(s.commit_mutex);
+            p = s.progress_locked();
+            if (p.energy.total < s.best_energy)
+            {
+                s.best_energy = p.energy.total;
+                impl_->best_model = to_model(s.mesh, transform);
+                p.best_energy = s.best_energy;
+            }
+        }
+        if (progress)
+            progress(p);
+    };
+
+    std::vector<WorkerTotals> totals(static_cast<size_t>(s.options.threads));
+    std::vector<std::thread> threads;
+    s.clock.restart();
+    int running = 1;
+    for (int i = 1; i < s.options.threads; ++i)
+    {
+        try
+        {
+            threads.emplace_back(run_worker, std::ref(s), i, std::ref(totals[static_cast<size_t>(i)]),
+                                 std::function<void()>());
+            ++running;
+        }
+        catch (const std::system_error&)
+        {
+            // No thread to be had (e.g. a wasm pool exhausted): fewer workers, same results' rules.
+            s.barrier.leave([] {});
+        }
+    }
+    run_worker(s, 0, totals[0], report);
+    for (std::thread& t : threads) t.join();
+    s.finished.store(true);
+
+    if (!s.error.empty())
+        throw std::runtime_error("annealing failed: " + s.error);
+
+    AnnealResult result;
+    result.start = s.start_terms;
+    result.model = to_model(s.mesh, transform);
+    result.end = s.energy.terms();
+    if (result.end.total <= s.best_energy)
+    {
+        result.best_model = result.model;
+        result.best = result.end;
+    }
+    else
+    {
+        result.best_model = std::move(impl_->best_model);
+        result.best = EnergyState(from_model(result.best_model), s.context, s.options.energy).terms();
+    }
+    AnnealStats& st = result.stats;
+    for (const WorkerTotals& t : totals) add_counts(st, t.stats);
+    st.wall_seconds = s.clock.seconds();
+    st.threads = running;
+    st.proposals = s.proposals.load();
+    st.valid_proposals = s.valid_proposals.load();
+    st.commits = s.commits.load();
+    st.proposals_per_second = st.wall_seconds > 0 ? static_cast<double>(st.proposals) / st.wall_seconds : 0.0;
+    st.commits_per_second = st.wall_seconds > 0 ? static_cast<double>(st.commits) / st.wall_seconds : 0.0;
+    st.initial_temperature = s.schedule.initial();
+    st.min_temperature = s.schedule.minimum();
+    st.t0_valid_samples = s.t0_samples;
+    st.cancelled = s.cancelled.load();
+    st.garbage_collections = s.barrier.pauses();
+    st.energy_consistent = EnergyState(s.mesh, s.context, s.options.energy).sums() == s.energy.sums();
+    if (progress)
+    {
+        std::lock_guard lock(s.commit_mutex);
+        AnnealProgress p = s.progress_locked();
+        p.best_energy = result.best.total;
+        progress(p);
+    }
+    return result;
+}
+
+EnergyTerms model_energy(const ZomeModel& model, const SurfaceContext& context, const EnergyOptions& options,
+                         size_t target_nodes)
+{
+    const ZomeMesh mesh = from_model(model);
+    EnergyOptions o = options;
+    o.target_nodes = target_nodes ? target_nodes : mesh.n_vertices();
+    return evaluate_energy(mesh, context, o);
+}
+
+} // namespace zomeify

@@ -1,0 +1,125 @@
+// run_pipeline(): Z0, then annealing, with every report the CLI and the page show.
+#include "core/pipeline/pipeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/anneal/engine/fold_overs.h"
+#include "core/base/errors.h"
+#include "core/base/stopwatch.h"
+#include "core/geom/closest_point.h"
+#include "core/geom/inside.h"
+#include "core/mesh/model_convert.h"
+#include "core/mesh/validate.h"
+#include "core/voxel/advisor.h"
+
+namespace zomeify {
+
+namespace {
+
+std::string genus_advice(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
+                         int resolution, long long genus, double seconds)
+{
+    // The user wants about this much detail, so look first for the nearest finer grid that keeps
+    // the genus (the smallest one overall may be a useless blob), and only then below their choice.
+    AdvisorOptions advisor;
+    advisor.seconds = seconds;
+    advisor.min_resolution = resolution + 1;
+    advisor.max_resolution = std::max(64, 2 * resolution);
+    AdvisorResult found = advise_resolution(surface, surface_genus, inside, advisor);
+    if (!found.found && resolution > 4)
+    {
+        advisor.min_resolution = 4;
+        advisor.max_resolution = resolution - 1;
+        const AdvisorResult below = advise_resolution(surface, surface_genus, inside, advisor);
+        if (below.found)
+            found = below;
+    }
+    return advice_message(resolution, genus, found);
+}
+
+// Closedness, Zome rules, genus, fold-overs and energy of the model to be written.
+void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyOptions& energy, size_t target_nodes)
+{
+    const ZomeMesh mesh = from_model(r.model);
+    const ValidationReport report = validate(mesh);
+    r.model_valid = report.ok();
+    r.validation = report.message();
+    r.model_genus = report.genus;
+    r.fold_overs = count_fold_overs(mesh, context);
+    EnergyOptions o = energy;
+    o.target_nodes = target_nodes;
+    r.model_energy = evaluate_energy(mesh, context, o);
+}
+
+} // namespace
+
+PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus, const PipelineOptions& options,
+                            const PipelineCallbacks& callbacks)
+{
+    if (options.b1 < 0.0 || !std::isfinite(options.b1))
+        throw InvalidInputError("b1 must be a positive length in mesh units");
+    if (options.b1 == 0.0 && (options.resolution < 1 || options.resolution > 1024))
+        throw InvalidInputError("the resolution must be between 1 and 1024 cells");
+
+    Stopwatch clock;
+    PipelineResult r;
+    r.surface_genus = surface_genus;
+
+    InitialModelOptions z0_options;
+    // A grid a few percent off (a nudge) often keeps a handle the exact grid closes or bridges.
+    z0_options.target_genus = surface_genus;
+    z0_options.resolution = options.resolution;
+    z0_options.b1 = options.b1;
+
+    const SurfaceProjector projector(surface);
+    const InsideTest inside(projector);
+    const InsidePredicate is_inside = [&](const Vec3& p) { return inside.is_inside(p); };
+    r.initial = build_initial_model(surface, is_inside, z0_options);
+    r.initial_seconds = r.initial.report.seconds;
+    const InitialModelReport& z0 = r.initial.report;
+    if (!z0.valid)
+        throw InvalidInputError("could not make the voxel boundary a 2-manifold after " + std::to_string(z0.attempts) +
+                                " grids (" + std::to_string(z0.repair.remaining_bad_vertices) +
+                                " non-manifold vertices left); try another resolution");
+    // The annealer's gate: Z0 must become a valid halfedge Zome mesh (closed, 2-manifold, Zome rules).
+    ZomeMesh z0_mesh = from_model(r.initial.model);
+    const ValidationReport check = validate(z0_mesh);
+    if (!check.ok())
+        throw InvalidInputError("internal error: Z0 failed validation: " + check.message());
+
+    const auto [lo, hi] = bounding_box(surface);
+    r.resolution = options.b1 > 0.0 ? static_cast<int>(std::lround((hi - lo).maxCoeff() / z0.grid.cell))
+                                    : options.resolution;
+    if (options.advise && z0.topology.genus != surface_genus)
+        r.advice = genus_advice(surface, surface_genus, is_inside, r.resolution, z0.topology.genus,
+                                options.advisor_seconds);
+    if (callbacks.initial)
+        callbacks.initial(r.initial.model);
+
+    const SurfaceContext context(projector, r.initial.model.transform);
+    if (options.initial_only)
+    {
+        r.model = r.initial.model;
+    }
+    else
+    {
+        Annealer annealer(std::move(z0_mesh), context, options.anneal);
+        const Annealer::ProgressCallback progress = [&](const AnnealProgress& p) {
+            if (callbacks.cancel && callbacks.cancel->load())
+                annealer.cancel();
+            if (callbacks.progress)
+                callbacks.progress(p, annealer);
+        };
+        r.anneal = annealer.run(progress);
+        // A cancelled run keeps its best model; a finished one ends at low temperature, where the
+        // final model is the one the schedule converged to.
+        r.model = r.anneal->stats.cancelled ? r.anneal->best_model : r.anneal->model;
+    }
+    check_model(r, context, options.anneal.energy,
+                options.anneal.target_nodes ? options.anneal.target_nodes : r.initial.model.nodes.size());
+    r.seconds = clock.seconds();
+    return r;
+}
+
+} // namespace zomeify

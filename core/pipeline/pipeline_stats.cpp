@@ -1,0 +1,116 @@
+// The --stats object of `zomeify run` (design.md §5), shared with the page's run summary.
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "core/pipeline/pipeline.h"
+#include "core/zome/slots.h"
+
+namespace zomeify {
+
+namespace {
+
+nlohmann::json terms_json(const EnergyTerms& t)
+{
+    return {{"total", t.total},         {"distance", t.distance}, {"orientation", t.orientation},
+            {"tangential", t.tangential}, {"normal", t.normal},   {"fairing", t.fairing},
+            {"complexity", t.complexity}, {"nodes", t.sums.nodes}, {"struts", t.sums.struts},
+            {"faces", t.sums.faces}};
+}
+
+nlohmann::json struts_by_kind(const ZomeModel& m)
+{
+    std::map<std::string, size_t> counts;
+    for (int k = 0; k < kStrutKindCount; ++k) counts[std::string(kind_info(static_cast<StrutKind>(k)).name)] = 0;
+    for (const auto& s : m.struts)
+    {
+        if (s[0] >= m.nodes.size() || s[1] >= m.nodes.size())
+            continue;
+        const int id = vector_id_of(m.nodes[s[1]] - m.nodes[s[0]]);
+        if (id >= 0)
+            ++counts[std::string(kind_info(vector_kind(id)).name)];
+    }
+    nlohmann::json j = nlohmann::json::object();
+    for (const auto& [k, n] : counts) j[k] = n;
+    return j;
+}
+
+nlohmann::json anneal_json(const AnnealResult& a)
+{
+    const AnnealStats& s = a.stats;
+    nlohmann::json ops = nlohmann::json::object();
+    for (int k = 0; k < kOperatorKinds; ++k)
+    {
+        const OperatorCounts& c = s.per_operator[k];
+        ops[std::string(operator_name(static_cast<OperatorKind>(k)))] = {
+            {"proposed", c.proposed}, {"valid", c.valid}, {"accepted", c.accepted}};
+    }
+    nlohmann::json rejections = nlohmann::json::object();
+    for (int r = 1; r < kRejectionKinds; ++r)
+        rejections[std::string(rejection_name(static_cast<Rejection>(r)))] = s.rejections[r];
+    return {{"seconds", s.wall_seconds},
+            {"valid_proposals", s.valid_proposals},
+            {"acceptance_rate", s.valid_proposals ? static_cast<double>(s.commits) / s.valid_proposals : 0.0},
+            {"initial_temperature", s.initial_temperature},
+            {"min_temperature", s.min_temperature},
+            {"t0_valid_samples", s.t0_valid_samples},
+            {"cancelled", s.cancelled},
+            {"operators", ops},
+            {"rejections", rejections},
+            {"busy_seeds", s.busy_seeds},
+            {"dead_seeds", s.dead_seeds},
+            {"lost_races", s.lost_races},
+            {"garbage_collections", s.garbage_collections},
+            {"energy_sums_consistent", s.energy_consistent},
+            {"best_energy", a.best.total}};
+}
+
+} // namespace
+
+std::string pipeline_stats_json(const PipelineResult& r, int indent)
+{
+    const InitialModelReport& z0 = r.initial.report;
+    nlohmann::json j;
+    j["stage"] = r.anneal ? "annealed" : "initial";
+    j["wall_seconds"] = r.seconds;
+    j["threads"] = r.anneal ? r.anneal->stats.threads : 1;
+    const uint64_t proposals = r.anneal ? r.anneal->stats.proposals : 0;
+    const uint64_t commits = r.anneal ? r.anneal->stats.commits : 0;
+    j["proposals"] = proposals;
+    j["commits"] = commits;
+    j["proposals_per_second"] = r.anneal ? r.anneal->stats.proposals_per_second : 0.0;
+    j["commits_per_second"] = r.anneal ? r.anneal->stats.commits_per_second : 0.0;
+    j["N"] = r.model.nodes.size();
+    j["struts"] = r.model.struts.size();
+    j["faces"] = r.model.faces.size();
+    j["struts_by_kind"] = struts_by_kind(r.model);
+    j["genus_surface"] = r.surface_genus;
+    j["genus_model"] = r.model_genus;
+    j["valid"] = r.model_valid;
+    j["fold_overs"] = r.fold_overs;
+    j["energy"] = {{"start", terms_json(r.anneal ? r.anneal->start : r.model_energy)},
+                   {"end", terms_json(r.model_energy)}};
+    if (r.anneal)
+        j["anneal"] = anneal_json(*r.anneal);
+    j["resolution"] = r.resolution;
+    j["b1_mesh_units"] = z0.grid.cell;
+    j["initial"] = {{"N", r.initial.model.nodes.size()},
+                    {"struts", r.initial.model.struts.size()},
+                    {"faces", r.initial.model.faces.size()},
+                    {"genus", z0.topology.genus},
+                    {"components", z0.topology.components},
+                    {"grid", z0.grid.dims},
+                    {"voxels", z0.voxels},
+                    {"grid_attempts", z0.attempts},
+                    {"grid_used", z0.attempt_used},
+                    {"cell_scale_factor", z0.layout.scale_factor},
+                    {"cleanup_removed", z0.repair.removed},
+                    {"cleanup_added", z0.repair.added},
+                    {"cavity_cells_filled", z0.voxelize.cavity_cells},
+                    {"seconds", r.initial_seconds}};
+    if (!r.advice.empty())
+        j["advice"] = r.advice;
+    return j.dump(indent);
+}
+
+} // namespace zomeify
