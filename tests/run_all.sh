@@ -1,34 +1,86 @@
 #!/usr/bin/env bash
 # Every test of the project (the README's test command, `npm test`, calls this):
-#   1. native build (warnings as errors) + ctest: GoogleTest suite and the CLI contract
+#   1. native build (warnings as errors) + ctest: GoogleTest suite, CLI contract, fuzz regression corpus
 #   2. wasm build + ctest: the same GoogleTest binary and the CLI under node
-#   3. AddressSanitizer + UBSan build + the whole GoogleTest suite
-# Ends with one line "tests: N passed, M failed" summing the ctest counts.
+#   3. AddressSanitizer + UBSan build + the whole GoogleTest suite and the fuzz regression corpus
+#   4. ThreadSanitizer build + the tests labelled `parallel` (ctest -L parallel)
+#   5. libFuzzer smoke run: every fuzz target for ZOME_FUZZ_SECONDS (default 15) seconds
+#   6. e2e/run.sh (Playwright in Chromium) when it exists
+# Ends with one line "tests: N passed, M failed" summing the ctest counts, one per fuzz target and the
+# e2e count. For local use, lanes can be skipped: ZOME_SKIP_WASM=1, ZOME_SKIP_ASAN=1, ZOME_SKIP_TSAN=1,
+# ZOME_SKIP_FUZZ=1, ZOME_SKIP_E2E=1; ZOME_SKIP_SANITIZERS=1 skips lanes 3-5.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 total_pass=0; total_fail=0; status=0
 
-run_ctest() { # run_ctest FLAVOUR [ctest args]
-  local dir="build/$1"; shift
+count() { # count PASSED FAILED
+  total_pass=$((total_pass + $1)); total_fail=$((total_fail + $2))
+  [ "$2" -eq 0 ] || status=1
+}
+
+# Adds the counts of the line "<word> N passed, M failed" in LOG; a missing line is one failure.
+count_summary() { # count_summary LOG WORD
+  local line; line=$(grep -E "^$2: [0-9]+ passed, [0-9]+ failed" "$1" | tail -1)
+  if [ -z "$line" ]; then count 0 1; return; fi
+  count "$(sed -E 's/.*: ([0-9]+) passed.*/\1/' <<<"$line")" "$(sed -E 's/.*passed, ([0-9]+) failed.*/\1/' <<<"$line")"
+}
+
+run_ctest() { # run_ctest DIR [ctest args]
+  local dir="$1"; shift
   local log; log=$(mktemp)
   (cd "$dir" && ctest --output-on-failure --timeout 1500 -j"$(nproc)" "$@") 2>&1 | tee "$log"
   local line; line=$(grep -E 'tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -1)
-  if [ -z "$line" ]; then status=1; total_fail=$((total_fail + 1)); rm -f "$log"; return; fi
+  if [ -z "$line" ]; then
+    if grep -q 'No tests were found' "$log"; then
+      echo "run_all: no tests matched in $dir ($*): nothing to count"
+    else
+      count 0 1
+    fi
+    rm -f "$log"; return
+  fi
   local failed total
   failed=$(sed -E 's/.*passed, ([0-9]+) tests? failed out of ([0-9]+).*/\1/' <<<"$line")
   total=$(sed -E 's/.*failed out of ([0-9]+).*/\1/' <<<"$line")
-  total_pass=$((total_pass + total - failed)); total_fail=$((total_fail + failed))
-  [ "$failed" -eq 0 ] || status=1
+  count $((total - failed)) "$failed"
   rm -f "$log"
 }
 
+skip() { [ "${!1:-0}" = 1 ]; }
+sanitizers=1; skip ZOME_SKIP_SANITIZERS && sanitizers=0
+
 bash tests/build.sh native || { echo "tests: 0 passed, 1 failed"; exit 1; }
-run_ctest native
-bash tests/build.sh wasm || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }
-run_ctest wasm
-if [ "${ZOME_SKIP_SANITIZERS:-0}" != 1 ]; then
+run_ctest build/native
+if ! skip ZOME_SKIP_WASM; then
+  bash tests/build.sh wasm || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }
+  run_ctest build/wasm
+fi
+if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_ASAN; then
   bash tests/build.sh asan || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }
-  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_ctest asan
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_ctest build/asan
+fi
+if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_TSAN; then
+  if bash tests/build.sh tsan; then
+    echo "tsan lane: tests labelled 'parallel':"
+    (cd build/tsan-lane && ctest -N -L parallel | grep -E 'Test +#|Total Tests')
+    TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" run_ctest build/tsan-lane -L parallel
+  else
+    count 0 1
+  fi
+fi
+if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_FUZZ; then
+  log=$(mktemp)
+  bash tests/fuzz/run.sh "${ZOME_FUZZ_SECONDS:-15}" 2>&1 | tee "$log"
+  count_summary "$log" fuzz
+  rm -f "$log"
+fi
+if [ -f e2e/run.sh ] && ! skip ZOME_SKIP_E2E; then
+  # e2e/run.sh may print its own "tests: N passed, M failed"; otherwise its exit status is one result.
+  log=$(mktemp)
+  bash e2e/run.sh 2>&1 | tee "$log"; rc=${PIPESTATUS[0]}
+  if grep -qE '^tests: [0-9]+ passed, [0-9]+ failed' "$log"; then
+    count_summary "$log" tests
+  elif [ "$rc" -eq 0 ]; then count 1 0; else count 0 1; fi
+  rm -f "$log"
 fi
 
 echo "tests: $total_pass passed, $total_fail failed"

@@ -269,6 +269,11 @@ ZomeModel decode_share_link(std::string_view link)
                     fail("face " + std::to_string(i) + " follows a missing strut");
                 face.push_back(list[j]);
             }
+            // The corners follow struts; the closing edge must be one too, or the model could not be
+            // shared again (the encoder refuses faces whose edges are not struts).
+            const auto& last = nb[face.back()];
+            if (!std::binary_search(last.begin(), last.end(), face.front()))
+                fail("face " + std::to_string(i) + " does not close along a strut");
         }
     }
     if (flags & kFlagTransform)

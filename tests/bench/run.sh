@@ -1,19 +1,67 @@
 #!/usr/bin/env bash
-# Runs every benchmark natively and as wasm under node; prints one JSON object per line and writes
-# them to build/bench/results.jsonl. Builds what is missing first.
+# The benchmark command (`npm run bench`): every benchmark natively and as wasm under node, one at a time.
+#   tests/bench/run.sh [--quick] [--native-only]
+# Writes build/bench/results.json (every result, the machine, wall time and peak memory of each run),
+# build/bench/results.md (the table, with wasm/native ratios) and build/bench/time_to_quality.svg
+# (energy against wall time from bench_anneal). --quick gives the benchmarks smaller workloads so the
+# whole command takes a few minutes; the README's figures come from the full run.
+# Builds the benchmark targets first (build/native, build/wasm; BENCH_NATIVE_DIR / BENCH_WASM_DIR override).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
-[ -d build/native ] || bash tests/build.sh native
-[ -d build/wasm ] || bash tests/build.sh wasm
-mkdir -p build/bench
-out=build/bench/results.jsonl; : > "$out"
-for exe in build/native/tests/bench/bench_*; do
-  [ -x "$exe" ] && [ ! -d "$exe" ] || continue
-  "$exe" | tee -a "$out"
+export NODE_PATH=/usr/share/nodejs
+quick=0; wasm=1
+for arg in "$@"; do
+  case "$arg" in
+    --quick) quick=1 ;;
+    --native-only) wasm=0 ;;
+    *) echo "usage: tests/bench/run.sh [--quick] [--native-only]" >&2; exit 2 ;;
+  esac
 done
-for js in build/wasm/tests/bench/bench_*.js; do
-  [ -f "$js" ] || continue
-  case "$js" in *.worker.js) continue ;; esac
-  node --no-experimental-fetch "$js" | tee -a "$out"
+native_dir=${BENCH_NATIVE_DIR:-build/native}
+wasm_dir=${BENCH_WASM_DIR:-build/wasm}
+out=build/bench; mkdir -p "$out"
+# Every bench the CMake file declares, in its order: new benchmarks are picked up without editing this.
+mapfile -t benches < <(sed -nE 's/^zome_bench\(([a-z_0-9]+)\).*/\1/p' tests/bench/CMakeLists.txt)
+
+build() { # build DIR CONFIGURE-FLAVOUR
+  [ -f "$1/CMakeCache.txt" ] || bash tests/build.sh "$2" >/dev/null
+  cmake --build "$1" -j"$(nproc)" --target "${benches[@]}" >/dev/null
+}
+build "$native_dir" native
+[ $wasm = 0 ] || build "$wasm_dir" wasm
+
+# Arguments per bench: quick mode keeps the same kind of work, only less of it.
+args_for() {
+  if [ $quick = 1 ]; then
+    case "$1" in
+      bench_projection) echo fertility.obj ;;
+      bench_voxel) echo rockerarm.obj 24 ;;
+      bench_energy) echo bunny.obj 200 ;;
+      bench_import) echo --runs 1 ;;
+      bench_anneal) echo --quick ;;
+    esac
+  fi
+}
+
+jsonl="$out/runs.jsonl"; : > "$jsonl"
+run_one() { # run_one PLATFORM BENCH COMMAND...
+  local platform=$1 bench=$2; shift 2
+  local stdout stats; stdout=$(mktemp); stats=$(mktemp)
+  echo "bench: $bench ($platform) $*" >&2
+  local rc=0
+  /usr/bin/time -v -o "$stats" "$@" >"$stdout" || rc=$?
+  python3 tests/bench/collect.py record "$platform" "$bench" "$rc" "$stdout" "$stats" >>"$jsonl"
+  rm -f "$stdout" "$stats"
+}
+for bench in "${benches[@]}"; do
+  read -ra args <<<"$(args_for "$bench")"
+  exe="$native_dir/tests/bench/$bench"
+  [ -x "$exe" ] && run_one native "$bench" "$exe" "${args[@]}"
+  js="$wasm_dir/tests/bench/$bench.js"
+  [ $wasm = 0 ] || [ ! -f "$js" ] || run_one wasm "$bench" node --no-experimental-fetch "$js" "${args[@]}"
 done
-echo "bench: results in $out" >&2
+
+mode=full; [ $quick = 0 ] || mode=quick
+python3 tests/bench/collect.py report "$jsonl" "$out/results.json" "$out/results.md" "$mode"
+python3 tests/bench/plot_curves.py "$out/results.json" "$out/time_to_quality.svg"
+echo "bench: $out/results.json, $out/results.md, $out/time_to_quality.svg" >&2

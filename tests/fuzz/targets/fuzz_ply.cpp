@@ -1,0 +1,8 @@
+// Fuzz target: the PLY reader (read_mesh_buffer by extension), then diagnosis and repair.
+#include "tests/fuzz/fuzz_mesh.h"
+#include "tests/fuzz/fuzz_target.h"
+
+ZOME_FUZZ_TARGET(ply)
+{
+    return zomeify::fuzz::fuzz_mesh_input(data, size, "input.ply");
+}
