@@ -15,6 +15,7 @@ int cmd_parts(const CommandArgs& args);   // cmd_parts.cpp
 int cmd_convert(const CommandArgs& args); // cmd_convert.cpp
 int cmd_link(const CommandArgs& args);    // cmd_link.cpp
 int cmd_run(const CommandArgs& args);     // cmd_run.cpp
+int cmd_score(const CommandArgs& args);   // cmd_score.cpp
 
 struct Command
 {

@@ -16,6 +16,7 @@ const std::vector<Command>& commands()
         {"parts", "parts MODEL [--json | --csv] [--have KITS]  parts list and kit plan of a .zome.json or .vef model", cmd_parts},
         {"convert", "convert MODEL -o OUT [-o OUT2 ...]     to .zome.json, .vef, .glb, .obj (+.mtl) or .csv", cmd_convert},
         {"link", "link MODEL | link --decode FRAGMENT -o OUT   share-link fragment of a model, and back", cmd_link},
+        {"score", "score MODEL --mesh MESH [--b0 L] [--json]  energy, fold-overs and distance of a model against a mesh", cmd_score},
         {"run", "run MESH -o OUT --initial-only [--resolution N | --b1 L] [--stats STATS.json]   initial Zome model Z0", cmd_run},
     };
     return list;

@@ -1,0 +1,43 @@
+#pragma once
+//! \file model_score.h
+//! How good a Zome model is against an input surface S, measured the same way for any model
+//! (ours, or the paper's published one): the energy terms of design.md §3.3, fold-overs, and the
+//! symmetric distance between the model's faces and S (all lengths in b0).
+
+#include <array>
+#include <string>
+
+#include "core/anneal/energy_options.h"
+#include "core/anneal/energy_sums.h"
+#include "core/geom/closest_point.h"
+#include "core/zome/model.h"
+#include "core/zome/slots.h"
+
+namespace zomeify {
+
+struct ModelScore
+{
+    size_t nodes = 0, struts = 0, faces = 0, triangles = 0, quads = 0;
+    std::array<size_t, kStrutKindCount> struts_by_kind{};
+    int genus = 0;
+    EnergyTerms energy;          //!< with target_nodes = the model's own node count unless given
+    size_t fold_overs = 0;       //!< faces whose normal points against S's normal at π(barycentre)
+    double rms_model_to_surface = 0.0, rms_surface_to_model = 0.0;
+    double rms_symmetric = 0.0;  //!< sqrt of the mean of both mean squared distances
+    double hausdorff = 0.0;      //!< max over both sample sets
+};
+
+struct ScoreOptions
+{
+    EnergyOptions energy;        //!< energy.target_nodes = 0 → the model's node count
+    int samples_per_face = 16;   //!< area samples per model face (plus its corners)
+};
+
+//! Scores a model with faces (counter-clockwise from outside) placed on S by model.transform.
+//! Throws InvalidInputError if the model has no faces or is not a closed Zome surface.
+ModelScore score_model(const ZomeModel& model, const SurfaceProjector& surface, const ScoreOptions& options = {});
+
+//! The score as a JSON object.
+std::string score_json(const ModelScore& score);
+
+} // namespace zomeify
