@@ -83,4 +83,11 @@ bool propose(OperatorKind kind, const ZomeMesh& mesh, Vertex seed, Rng& rng, Cla
 //! threads read it concurrently. Throws TopologyError only on a broken contract (a bug).
 void apply_proposal(ZomeMesh& mesh, const Proposal& proposal);
 
+//! Whether every node the proposal adds still has a free position (a removed node's own position
+//! counts as free). propose() checks this against the global position index, but another thread
+//! may commit a node at the same position before this proposal commits (two claimed regions can
+//! be far apart in the mesh and close in space): call it inside the commit critical section,
+//! right before apply_proposal(), and drop the proposal if it is false.
+bool new_positions_free(const ZomeMesh& mesh, const Proposal& proposal) noexcept;
+
 } // namespace zomeify

@@ -32,7 +32,8 @@ public:
     //! Uniform in [0, n) for n ≥ 1 (multiply-shift; bias < n / 2^64, irrelevant here).
     uint64_t below(uint64_t n) noexcept
     {
-        return static_cast<uint64_t>((static_cast<unsigned __int128>(next()) * n) >> 64);
+        __extension__ using Wide = unsigned __int128; // GCC/Clang (and Emscripten) extension
+        return static_cast<uint64_t>((static_cast<Wide>(next()) * n) >> 64);
     }
     //! Uniform in [0, 1) with 53 random bits.
     double uniform01() noexcept { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
