@@ -1,0 +1,166 @@
+// The annealer's throughput and time-to-quality on the bunny at about 400 nodes (Z0 at 8 cells,
+// 330 nodes, N_target 392 as in the paper's bunny). Prints one JSON object.
+//
+//   bench_anneal [throughput] [SECONDS]   proposals/s and commits/s at 1, 2, 4, 8 threads, each a
+//                                         SECONDS-long run (default 5); wall and process CPU time
+//   bench_anneal quality [S1 S2 THREADS]  the energy reached in S1 and in S2 seconds (default 30
+//                                         and 300, 2 threads), with energy-vs-time points
+//                                         (every 0.5 s) to plot
+//
+// CPU time is reported beside wall time because the machine may be shared: proposals per CPU
+// second do not drop when another process takes a core, proposals per wall second do.
+#include <ctime>
+#include <iostream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "core/anneal/engine/annealer.h"
+#include "core/geom/inside.h"
+#include "core/mesh/model_convert.h"
+#include "core/mesh/validate.h"
+#include "core/surface/prepare.h"
+#include "core/voxel/initial_model.h"
+#include "tests/bench/bench_util.h"
+
+using namespace zomeify;
+
+namespace {
+
+constexpr int kResolution = 8;
+constexpr size_t kTargetNodes = 392;
+
+struct Scene
+{
+    TriangleMesh surface;
+    std::unique_ptr<SurfaceProjector> projector;
+    ZomeModel z0;
+};
+
+Scene bunny()
+{
+    Scene s;
+    s.surface = load_surface(std::string(ZOME_SHARED_DIR) + "/data/meshes/bunny.obj");
+    s.projector = std::make_unique<SurfaceProjector>(s.surface);
+    const InsideTest inside(*s.projector);
+    InitialModelOptions o;
+    o.resolution = kResolution;
+    o.target_genus = 0;
+    s.z0 = build_initial_model(s.surface, [&](const Vec3& p) { return inside.is_inside(p); }, o).model;
+    return s;
+}
+
+double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC; }
+
+nlohmann::json terms(const EnergyTerms& t)
+{
+    return {{"total", t.total}, {"distance", t.distance}, {"orientation", t.orientation}, {"fairing", t.fairing},
+            {"complexity", t.complexity}, {"nodes", t.sums.nodes}};
+}
+
+nlohmann::json throughput(const Scene& s, double seconds)
+{
+    nlohmann::json runs = nlohmann::json::array();
+    for (int threads : {1, 2, 4, 8})
+    {
+        // A fresh context per run: every run starts with a cold projection cache.
+        const SurfaceContext context(*s.projector, s.z0.transform);
+        AnnealOptions o;
+        o.threads = threads;
+        o.seconds = seconds;
+        o.seed = 1;
+        o.target_nodes = kTargetNodes;
+        Annealer annealer(s.z0, context, o);
+        const double cpu0 = cpu_seconds();
+        const AnnealResult r = annealer.run();
+        const double cpu = cpu_seconds() - cpu0;
+        const AnnealStats& st = r.stats;
+        runs.push_back({{"threads", threads},
+                        {"wall_seconds", st.wall_seconds},
+                        {"cpu_seconds", cpu},
+                        {"proposals", st.proposals},
+                        {"commits", st.commits},
+                        {"proposals_per_second", st.proposals_per_second},
+                        {"commits_per_second", st.commits_per_second},
+                        {"proposals_per_cpu_second", cpu > 0 ? static_cast<double>(st.proposals) / cpu : 0.0},
+                        {"busy_seeds", st.busy_seeds},
+                        {"dead_seeds", st.dead_seeds},
+                        {"lost_races", st.lost_races},
+                        {"pauses", st.garbage_collections},
+                        {"energy_start", r.start.total},
+                        {"energy_end", r.end.total},
+                        {"nodes_end", r.model.nodes.size()},
+                        {"energy_consistent", st.energy_consistent}});
+    }
+    const double one = runs[0]["proposals_per_second"].get<double>();
+    for (auto& run : runs)
+        run["speedup_vs_1_thread"] = one > 0 ? run["proposals_per_second"].get<double>() / one : 0.0;
+    return runs;
+}
+
+nlohmann::json quality_run(const Scene& s, double seconds, int threads)
+{
+    const SurfaceContext context(*s.projector, s.z0.transform);
+    AnnealOptions o;
+    o.threads = threads;
+    o.seconds = seconds;
+    o.seed = 1;
+    o.target_nodes = kTargetNodes;
+    o.progress_interval = 0.5;
+    Annealer annealer(s.z0, context, o);
+    nlohmann::json curve = nlohmann::json::array();
+    const AnnealResult r = annealer.run([&](const AnnealProgress& p) {
+        curve.push_back({p.elapsed_seconds, p.energy.total, p.temperature, p.nodes});
+    });
+    const ZomeMesh mesh = from_model(r.model);
+    const ValidationReport check = validate(mesh);
+    return {{"seconds", seconds},
+            {"threads", r.stats.threads},
+            {"proposals", r.stats.proposals},
+            {"commits", r.stats.commits},
+            {"energy_start", terms(r.start)},
+            {"energy_end", terms(r.end)},
+            {"energy_best", r.best.total},
+            {"valid", check.ok()},
+            {"genus", check.genus},
+            {"curve_columns", {"seconds", "energy", "temperature", "nodes"}},
+            {"curve", curve}};
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    const std::string mode = argc > 1 ? argv[1] : "throughput";
+    const Scene s = bunny();
+    nlohmann::json j;
+    j["benchmark"] = "anneal";
+    j["platform"] = bench::platform();
+    j["mesh"] = "bunny.obj";
+    j["resolution"] = kResolution;
+    j["z0_nodes"] = s.z0.nodes.size();
+    j["target_nodes"] = kTargetNodes;
+    if (mode == "quality")
+    {
+        const double s1 = argc > 2 ? std::atof(argv[2]) : 30.0;
+        const double s2 = argc > 3 ? std::atof(argv[3]) : 300.0;
+        const int threads = argc > 4 ? std::atoi(argv[4]) : 2;
+        j["mode"] = "quality";
+        j["short"] = quality_run(s, s1, threads);
+        j["long"] = quality_run(s, s2, threads);
+        const double e1 = j["short"]["energy_end"]["total"].get<double>();
+        const double e2 = j["long"]["energy_end"]["total"].get<double>();
+        j["short_over_long"] = e2 > 0 ? e1 / e2 : 0.0;
+    }
+    else
+    {
+        const double seconds = mode == "throughput" ? (argc > 2 ? std::atof(argv[2]) : 5.0) : std::atof(argv[1]);
+        j["mode"] = "throughput";
+        j["seconds_per_run"] = seconds;
+        j["runs"] = throughput(s, seconds > 0 ? seconds : 5.0);
+    }
+    j["peak_memory_mib"] = bench::peak_memory_mib();
+    std::cout << j.dump(2) << "\n";
+    return 0;
+}
