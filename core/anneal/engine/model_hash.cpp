@@ -1,7 +1,7 @@
 #include "core/anneal/engine/model_hash.h"
 
 #include <algorithm>
-#include <bit>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -19,6 +19,13 @@ public:
     {
         for (int32_t c : p.c) add(static_cast<uint64_t>(static_cast<uint32_t>(c)));
     }
+    void add_double(double x) noexcept
+    {
+        // memcpy, not std::bit_cast: Emscripten 3.1.6's libc++ has no bit_cast.
+        uint64_t bits = 0;
+        std::memcpy(&bits, &x, sizeof bits);
+        add(bits);
+    }
     uint64_t value() const noexcept { return h_; }
 
 private:
@@ -32,7 +39,7 @@ uint64_t canonical_model_hash(const ZomeModel& model)
     Hasher h;
     std::vector<ZVec> nodes = model.nodes;
     std::sort(nodes.begin(), nodes.end());
-    h.add(nodes.size());
+    h.add(static_cast<uint64_t>(nodes.size()));
     for (const ZVec& p : nodes) h.add(p);
 
     std::vector<std::pair<ZVec, ZVec>> struts;
@@ -49,7 +56,7 @@ uint64_t canonical_model_hash(const ZomeModel& model)
     std::sort(struts.begin(), struts.end(), [](const auto& x, const auto& y) {
         return x.first < y.first || (x.first == y.first && x.second < y.second);
     });
-    h.add(struts.size());
+    h.add(static_cast<uint64_t>(struts.size()));
     for (const auto& [a, b] : struts)
     {
         h.add(a);
@@ -72,15 +79,15 @@ uint64_t canonical_model_hash(const ZomeModel& model)
     std::sort(faces.begin(), faces.end(), [](const auto& x, const auto& y) {
         return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end());
     });
-    h.add(faces.size());
+    h.add(static_cast<uint64_t>(faces.size()));
     for (const auto& f : faces)
     {
-        h.add(f.size());
+        h.add(static_cast<uint64_t>(f.size()));
         for (const ZVec& p : f) h.add(p);
     }
 
-    h.add(std::bit_cast<uint64_t>(model.transform.scale));
-    for (double t : model.transform.translation) h.add(std::bit_cast<uint64_t>(t));
+    h.add_double(model.transform.scale);
+    for (double t : model.transform.translation) h.add_double(t);
     return h.value();
 }
 
