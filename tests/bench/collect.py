@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Collects the benchmark runs of tests/bench/run.sh. Only the standard library.
 
-    collect.py record PLATFORM BENCH EXIT_STATUS STDOUT_FILE TIME_V_FILE   -> one JSON line on stdout
+    collect.py record PLATFORM BENCH ARGS EXIT_STATUS STDOUT_FILE TIME_V_FILE   -> one JSON line on stdout
     collect.py report RUNS_JSONL RESULTS_JSON RESULTS_MD MODE              -> the JSON file and the table
 
 A run's results are the JSON objects its benchmark printed (one per line). Peak memory comes from
@@ -39,17 +39,21 @@ def parse_time_v(path):
     return stats
 
 
-def record(platform_name, bench, exit_status, stdout_path, time_path):
-    results = []
+def record(platform_name, bench, args, exit_status, stdout_path, time_path):
+    # One or more JSON objects, each on one line or pretty-printed over several.
     with open(stdout_path) as f:
-        for line in f:
-            line = line.strip()
-            if line.startswith("{"):
-                try:
-                    results.append(json.loads(line))
-                except json.JSONDecodeError:
-                    pass
-    run = {"bench": bench, "platform": platform_name, "exit_status": int(exit_status), "results": results}
+        text = f.read()
+    results, pos, decoder = [], 0, json.JSONDecoder()
+    while True:
+        pos = text.find("{", pos)
+        if pos < 0:
+            break
+        try:
+            value, pos = decoder.raw_decode(text, pos)
+            results.append(value)
+        except json.JSONDecodeError:
+            pos += 1
+    run = {"bench": bench, "args": args, "platform": platform_name, "exit_status": int(exit_status), "results": results}
     run.update(parse_time_v(time_path))
     print(json.dumps(run))
 
@@ -107,15 +111,19 @@ def slowdown(metric, native, wasm):
     return None
 
 
+def run_name(run):
+    return (run["bench"] + " " + run.get("args", "")).strip()
+
+
 def comparisons(runs):
     by_key = {}
     for run in runs:
         metrics = {}
         for i, result in enumerate(run["results"]):
             flatten(result, "" if len(run["results"]) == 1 else "#%d" % i, metrics)
-        by_key[(run["bench"], run["platform"])] = metrics
+        by_key[(run_name(run), run["platform"])] = metrics
     rows = []
-    for bench in dict.fromkeys(r["bench"] for r in runs):
+    for bench in dict.fromkeys(run_name(r) for r in runs):
         native, wasm = by_key.get((bench, "native"), {}), by_key.get((bench, "wasm"), {})
         for metric, value in native.items():
             if any(s in metric.lower() for s in SKIP):
@@ -145,8 +153,8 @@ def markdown(doc):
                  m.get("node"), m.get("emscripten"), m.get("load_average_at_end"), m.get("git_commit")), "",
              "## Runs (wall time and peak resident memory of the whole process, from /usr/bin/time -v)", "",
              "| bench | native s | native peak MiB | wasm s | wasm peak MiB | wasm / native time |", "|---|---|---|---|---|---|"]
-    runs = {(r["bench"], r["platform"]): r for r in doc["runs"]}
-    for bench in dict.fromkeys(r["bench"] for r in doc["runs"]):
+    runs = {(run_name(r), r["platform"]): r for r in doc["runs"]}
+    for bench in dict.fromkeys(run_name(r) for r in doc["runs"]):
         n, w = runs.get((bench, "native"), {}), runs.get((bench, "wasm"), {})
         def cell(r, k):
             if not r:
@@ -178,7 +186,7 @@ def report(jsonl, out_json, out_md, mode):
 
 
 def main():
-    if len(sys.argv) == 7 and sys.argv[1] == "record":
+    if len(sys.argv) == 8 and sys.argv[1] == "record":
         record(*sys.argv[2:])
     elif len(sys.argv) == 6 and sys.argv[1] == "report":
         report(*sys.argv[2:])

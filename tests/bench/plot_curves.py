@@ -113,7 +113,7 @@ def main():
         doc = json.load(f)
     curves = []
     for run in doc.get("runs", []):
-        if run.get("bench") == "bench_anneal":
+        if run.get("bench") in ("bench_anneal", "bench_quality"):
             find_curves(run.get("results", []), {"platform": run.get("platform")}, curves)
     by_mesh = {}
     for context, pts in curves:

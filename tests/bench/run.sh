@@ -30,35 +30,48 @@ build() { # build DIR CONFIGURE-FLAVOUR
 build "$native_dir" native
 [ $wasm = 0 ] || build "$wasm_dir" wasm
 
-# Arguments per bench: quick mode keeps the same kind of work, only less of it.
-args_for() {
+# The invocations of a bench, one line of arguments each (an empty line: no arguments). Quick mode
+# keeps the same kind of work, only less of it.
+invocations() {
   if [ $quick = 1 ]; then
     case "$1" in
       bench_projection) echo fertility.obj ;;
       bench_voxel) echo rockerarm.obj 24 ;;
       bench_energy) echo bunny.obj 200 ;;
       bench_import) echo --runs 1 ;;
-      bench_anneal) echo --quick ;;
+      bench_anneal) echo throughput 1 ;;
+      bench_quality) echo --seconds 4 ;;
+      *) echo ;;
+    esac
+  else
+    case "$1" in
+      bench_anneal) echo throughput 5 ;;
+      bench_quality) echo --seconds 30 ;;
+      *) echo ;;
     esac
   fi
 }
 
 jsonl="$out/runs.jsonl"; : > "$jsonl"
-run_one() { # run_one PLATFORM BENCH COMMAND...
-  local platform=$1 bench=$2; shift 2
+run_one() { # run_one PLATFORM BENCH ARGS COMMAND...
+  local platform=$1 bench=$2 args=$3; shift 3
   local stdout stats; stdout=$(mktemp); stats=$(mktemp)
-  echo "bench: $bench ($platform) $*" >&2
+  echo "bench: $bench $args ($platform)" >&2
   local rc=0
   /usr/bin/time -v -o "$stats" "$@" >"$stdout" || rc=$?
-  python3 tests/bench/collect.py record "$platform" "$bench" "$rc" "$stdout" "$stats" >>"$jsonl"
+  python3 tests/bench/collect.py record "$platform" "$bench" "$args" "$rc" "$stdout" "$stats" >>"$jsonl"
   rm -f "$stdout" "$stats"
 }
 for bench in "${benches[@]}"; do
-  read -ra args <<<"$(args_for "$bench")"
-  exe="$native_dir/tests/bench/$bench"
-  [ -x "$exe" ] && run_one native "$bench" "$exe" "${args[@]}"
-  js="$wasm_dir/tests/bench/$bench.js"
-  [ $wasm = 0 ] || [ ! -f "$js" ] || run_one wasm "$bench" node --no-experimental-fetch "$js" "${args[@]}"
+  while IFS= read -r line; do
+    read -ra args <<<"$line"
+    exe="$native_dir/tests/bench/$bench"
+    if [ -x "$exe" ]; then run_one native "$bench" "$line" "$exe" "${args[@]}"; fi
+    js="$wasm_dir/tests/bench/$bench.js"
+    if [ $wasm = 1 ] && [ -f "$js" ]; then
+      run_one wasm "$bench" "$line" node --no-experimental-fetch "$js" "${args[@]}"
+    fi
+  done < <(invocations "$bench")
 done
 
 mode=full; [ $quick = 0 ] || mode=quick
