@@ -258,8 +258,10 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
         callbacks.progress = [&](const AnnealProgress &ap, Annealer &annealer) {
             // The model goes out a few times a second (the page draws at least two per second);
             // a snapshot costs a copy of the mesh under the commit lock, so not on every report.
+            // Not on the final report: the engine makes it under its commit lock, which
+            // snapshot() takes too; the final model comes from run_pipeline's result anyway.
             const double now = clock.seconds();
-            if (last_snapshot < 0.0 || now - last_snapshot >= 0.2 || ap.finished)
+            if (!ap.finished && (last_snapshot < 0.0 || now - last_snapshot >= 0.2))
             {
                 last_snapshot = now;
                 set_model(annealer.snapshot(), "run");

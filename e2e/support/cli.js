@@ -2,7 +2,7 @@
 import { execFileSync } from 'node:child_process';
 import fs from 'node:fs';
 import path from 'node:path';
-import { CLI, OUT } from './paths.js';
+import { CLI, MESHES, OUT } from './paths.js';
 
 export function cli(args) {
   return execFileSync(CLI, args, { encoding: 'utf8', stdio: ['ignore', 'pipe', 'pipe'] });
@@ -10,10 +10,13 @@ export function cli(args) {
 
 /** Whether this CLI's `run` anneals with a proposal budget (else only --initial-only works). */
 export function cliHasProposals() {
+  fs.mkdirSync(OUT, { recursive: true });
   try {
-    return /--proposals/.test(cli(['run', '--help']));
-  } catch (e) {
-    return /--proposals/.test(String(e.stdout) + String(e.stderr));
+    cli(['run', path.join(MESHES, 'cube.obj'), '--resolution', '4', '--proposals', '1', '--threads', '1',
+      '-o', path.join(OUT, 'probe.zome.json')]);
+    return true;
+  } catch {
+    return false;
   }
 }
 

@@ -1,7 +1,7 @@
 // The bundled samples (CC BY meshes, attribution in public/samples/README.md). Each has a
 // finished model precomputed at build time (web/build_samples.sh), shown instantly.
 export const SAMPLES = [
-  { id: 'torus', label: 'Torus', mesh: 'torus.obj', resolution: 6, credit: 'Oded Stein, CC BY 4.0' },
+  { id: 'torus', label: 'Torus', mesh: 'torus.obj', resolution: 8, credit: 'Oded Stein, CC BY 4.0' },
   { id: 'sphere', label: 'Sphere', mesh: 'sphere.obj', resolution: 6, credit: 'Oded Stein, CC BY 4.0' },
   { id: 'cube', label: 'Cube', mesh: 'cube.obj', resolution: 5, credit: 'Oded Stein, CC BY 4.0' },
   { id: 'scorpion', label: 'Scorpion', mesh: 'scorpion.obj', resolution: 12,
