@@ -13,7 +13,14 @@ test('share link round trip in a fresh page', async ({ page, browser }) => {
   const s = await summary(fresh);
   expect(s.source).toBe('link');
   expect(await fresh.evaluate(() => window.zomeify.progress())).toBeNull(); // nothing was run
-  expect(await fresh.evaluate(() => window.zomeify.parts())).toEqual(parts);
+  const back = await fresh.evaluate(() => window.zomeify.parts());
+  // Node order differs after a round trip, so float sums may differ in their last bits.
+  for (const key of ['total_strut_length_b0', 'total_strut_length_mm']) {
+    expect(back[key]).toBeCloseTo(parts[key], 6);
+    delete back[key];
+    delete parts[key];
+  }
+  expect(back).toEqual(parts);
   expect(errors).toEqual([]);
 });
 

@@ -29,24 +29,25 @@ export class App {
   }
 
   /** Loads mesh or model bytes; returns {ok, kind?, error?}. `run` starts a run after a mesh. */
-  async loadBytes(name, bytes, { run = false } = {}) {
+  async loadBytes(name, bytes, { run = false, fit = true } = {}) {
     if (this.running) {
       this.fail(`${name}: a run is in progress; cancel it first`);
       return { ok: false, error: this.lastError };
     }
     let result;
-    this.fitNext = true;
+    const fitBefore = this.fitNext;
+    this.fitNext = fit; // a model's snapshot event arrives before the reply
     try {
       result = await this.bridge.load(name, bytes);
     } catch (e) {
-      this.fitNext = false;
+      this.fitNext = fitBefore;
       this.fail(e.message.startsWith(name) ? e.message : `${name}: ${e.message}`);
       return { ok: false, error: this.lastError };
     }
     this.lastError = null;
     this.currentName = name.replace(/\.(zome\.json|json|vef|obj|stl|ply|off|gltf|glb)$/i, '') || 'model';
     if (result.kind === 'mesh') {
-      this.fitNext = true;
+      this.fitNext = fit; // the first model of a new shape is framed
       const r = result.report;
       this.viewer.setSurface(await this.bridge.surface());
       this.surfaceEl.textContent = `${name}: ${r.vertices} vertices, ${r.faces} triangles, genus ${r.genus}` +
@@ -77,14 +78,22 @@ export class App {
     return this.loadBytes(name, bytes, options);
   }
 
-  /** Shows a bundled sample: its mesh (ready to run again) and its precomputed finished model. */
-  async showSample(id = DEFAULT_SAMPLE) {
+  /** Fetches a sample's mesh and finished model (bytes), e.g. before the core is up. */
+  static fetchSample(id = DEFAULT_SAMPLE) {
     const sample = SAMPLES.find((s) => s.id === id) || SAMPLES[0];
-    const [mesh, model] = await Promise.all([
-      fetchBytes(sampleUrl(sample.mesh)), fetchBytes(sampleUrl(sample.id + '.zome.json')).catch(() => null),
-    ]);
-    if (model) await this.loadBytes(sample.id + '.zome.json', model);
-    await this.loadBytes(sample.mesh, mesh);
+    return {
+      sample,
+      mesh: fetchBytes(sampleUrl(sample.mesh)),
+      model: fetchBytes(sampleUrl(sample.id + '.zome.json')).catch(() => null),
+    };
+  }
+
+  /** Shows a bundled sample: its mesh (ready to run again) and its precomputed finished model. */
+  async showSample(id = DEFAULT_SAMPLE, fetched = App.fetchSample(id), { fit = true } = {}) {
+    const { sample } = fetched;
+    const [mesh, model] = await Promise.all([fetched.mesh, fetched.model]);
+    if (model) await this.loadBytes(sample.id + '.zome.json', model, { fit });
+    await this.loadBytes(sample.mesh, mesh, { fit: !model });
     this.controls.set({ resolution: sample.resolution });
     this.status.note(`Sample: ${sample.label} (${sample.credit}). Drop your own mesh anywhere, or press Run.`);
     if (!model) await this.run();

@@ -12,6 +12,7 @@ import { installApi } from './api.js';
 import { setupFileInput } from './file_input.js';
 import { SAMPLES } from './samples.js';
 import { linkFromLocation } from './share_link.js';
+import { snapshotFromZomeJson } from './model_json.js';
 
 const $ = (id) => document.getElementById(id);
 const status = new Status($('status'));
@@ -58,13 +59,22 @@ window.addEventListener('hashchange', () => {
 });
 
 async function boot() {
+  // The default sample is drawn from its .zome.json while the core is still starting.
+  const link = linkFromLocation();
+  const early = link ? null : App.fetchSample();
+  const shownEarly = early && early.model.then((bytes) => {
+    if (!bytes || viewer.snapshot) return false;
+    viewer.setModel(snapshotFromZomeJson(new TextDecoder().decode(bytes)), { fit: true });
+    info.firstModelMs = performance.now();
+    return true;
+  }).catch(() => false);
+
   const started = await bridge.start();
   Object.assign(info, started);
   controls.setMaxThreads(started.maxThreads);
   if (!info.crossOriginIsolated) {
     $('fallback-note').hidden = false;
   }
-  const link = linkFromLocation();
   if (link) {
     const opened = await app.openLink(link);
     if (!opened.ok) {
@@ -72,8 +82,10 @@ async function boot() {
       app.fail(opened.error); // the sample is shown, but the user must see why their link was not
     }
   } else {
-    await app.showSample();
+    await app.showSample(undefined, early, { fit: !(await shownEarly) });
   }
+  info.firstModelMs ??= performance.now();
+  info.readyMs = performance.now();
   resolveReady({ ...info });
 }
 
