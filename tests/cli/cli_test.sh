@@ -49,6 +49,27 @@ if [[ "$link" =~ ^m=1\.[A-Za-z0-9_-]+$ ]] && [ ${#link} -le 3000 ]; then ok; els
 expect_output "link decode"       'wrote .*linked\.vef \(392 balls, 968 struts\)' link --decode "#$link" -o "$tmp/linked.vef"
 expect_output "linked parts"      '"B2": 5,' parts "$tmp/linked.vef" --json
 
+# run: the whole pipeline. A proposal budget with one thread is deterministic, so two runs with the
+# same seed give the same model (compared through its parts list), natively and in wasm alike.
+mesh="$shared/data/meshes/bunny.obj"
+expect_output "run initial"     'Z0 of bunny\.obj at 8 cells .*: 330 balls' run "$mesh" --resolution 8 --initial-only -o "$tmp/z0.zome.json"
+expect_output "run anneal"      'Annealed .* on 1 thread: 20000 proposals, [0-9]+ commits; E 143\.8 -> .*genus 0' \
+  run "$mesh" --resolution 8 --target-nodes 392 --proposals 20000 --threads 1 --seed 3 -o "$tmp/a.zome.json" -o "$tmp/a.vef" --stats "$tmp/a.json"
+for key in '"proposals": 20000' '"genus_model": 0' '"genus_surface": 0' '"energy_sums_consistent": true' '"valid": true' \
+           '"start": \{' '"end": \{' '"orientation": ' '"struts_by_kind": \{' '"commits_per_second": '; do
+  if grep -Eq -- "$key" "$tmp/a.json"; then ok; else bad "run stats lack /$key/"; fi
+done
+"${cli[@]}" run "$mesh" --resolution 8 --target-nodes 392 --proposals 20000 --threads 1 --seed 3 -o "$tmp/b.zome.json" >/dev/null 2>&1
+if [ -s "$tmp/a.zome.json" ] && [ "$("${cli[@]}" parts "$tmp/a.zome.json" --csv)" = "$("${cli[@]}" parts "$tmp/b.zome.json" --csv)" ] \
+   && [ "$("${cli[@]}" parts "$tmp/a.zome.json" --csv)" = "$("${cli[@]}" parts "$tmp/a.vef" --csv)" ]; then ok; else bad "run not repeatable"; fi
+expect_output "run 2 threads"   'on 2 threads: .*genus 0' run "$mesh" --resolution 8 --proposals 20000 --threads 2 -o "$tmp/c.zome.json"
+expect_error "run bad format"   'unknown model format'   run "$mesh" -o "$tmp/x.stl"
+expect_error "run no -o"        'missing -o'             run "$mesh"
+expect_error "run both scales"  'not both'               run "$mesh" --resolution 8 --b1 0.2 -o "$tmp/x.zome.json"
+expect_error "run bad seconds"  'seconds'                run "$mesh" --seconds -1 -o "$tmp/x.zome.json"
+expect_error "run bad threads"  'threads'                run "$mesh" --threads 1000 -o "$tmp/x.zome.json"
+expect_error "run missing mesh" 'cannot open'            run "$tmp/missing.obj" -o "$tmp/x.zome.json"
+
 printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/nonzome.vef"
 head -c 700 "$bunny" > "$tmp/truncated.vef"
 printf 'vZome VEF 6 field golden 999999999999 (0,0)' > "$tmp/absurd.vef"
