@@ -17,7 +17,9 @@ const std::vector<Command>& commands()
         {"convert", "convert MODEL -o OUT [-o OUT2 ...]     to .zome.json, .vef, .glb, .obj (+.mtl) or .csv", cmd_convert},
         {"link", "link MODEL | link --decode FRAGMENT -o OUT   share-link fragment of a model, and back", cmd_link},
         {"score", "score MODEL --mesh MESH [--b0 L] [--json]  energy, fold-overs and distance of a model against a mesh", cmd_score},
-        {"run", "run MESH -o OUT --initial-only [--resolution N | --b1 L] [--stats STATS.json]   initial Zome model Z0", cmd_run},
+        {"run", "run MESH -o OUT [-o OUT2 ...] [--resolution N | --b1 L] [--target-nodes N] [--seconds S | --proposals N]\n"
+                "          [--threads T] [--seed K] [--initial-only] [--stats STATS.json]   Z0, then annealing",
+         cmd_run},
     };
     return list;
 }
