@@ -212,8 +212,13 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     const double t0 = s.options.initial_temperature > 0.0 ? s.options.initial_temperature : estimate_t0(s, s.t0_samples);
     s.schedule = CoolingSchedule(t0, s.options.min_temperature);
     s.temperature.store(s.schedule.initial());
-    s.make_room();
-    impl_->best_model = to_model(s.mesh, transform);
+    {
+        // progress() and snapshot() may already be called from other threads.
+        std::lock_guard lock(s.commit_mutex);
+        s.make_room();
+        impl_->best_model = to_model(s.mesh, transform);
+        s.clock.restart();
+    }
 
     // Progress (and the best-model sample) on worker 0, i.e. this thread.
     const std::function<void()> report = [this, &s, &progress, &transform] {
@@ -234,7 +239,6 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
 
     std::vector<WorkerTotals> totals(static_cast<size_t>(s.options.threads));
     std::vector<std::thread> threads;
-    s.clock.restart();
     int running = 1;
     for (int i = 1; i < s.options.threads; ++i)
     {
