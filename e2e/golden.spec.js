@@ -5,7 +5,7 @@ import path from 'node:path';
 import { test, expect } from '@playwright/test';
 import { MESHES } from './support/paths.js';
 import { goldenRun } from './support/cli.js';
-import { openPage, summary, dropFile, pickFile, waitIdle, waitRunning, expectNoPageErrors } from './support/page.js';
+import { openPage, summary, dropFile, pickFile, expectNoPageErrors } from './support/page.js';
 
 const torus = path.join(MESHES, 'torus.obj');
 let golden;
@@ -18,9 +18,10 @@ for (const [how, put] of [['drag and drop', dropFile], ['file picker', pickFile]
   test(`torus by ${how}: same counts as the CLI (seed 7, 1 thread)`, async ({ page }) => {
     const { errors } = await openPage(page);
     await page.evaluate((o) => window.zomeify.setOptions(o), golden.options);
-    await put(page, 'torus.obj', fs.readFileSync(torus));
-    await waitRunning(page);
-    await waitIdle(page);
+    const runsBefore = await page.evaluate(() => window.zomeify.runs());
+    await put(page, 'torus.obj', fs.readFileSync(torus)); // "run after loading" is ticked
+    await page.waitForFunction((n) => window.zomeify.runs() > n && window.zomeify.state() === 'idle', runsBefore,
+      { timeout: 90_000, polling: 50 });
     const s = await summary(page);
     const progress = await page.evaluate(() => window.zomeify.progress());
     expect(progress.state).toBe('done');

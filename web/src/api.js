@@ -23,6 +23,8 @@ export function installApi(app, { ready, info }) {
     cancel: () => app.cancel(),
     setOptions: (options) => app.controls.set(options),
     options: () => app.controls.get(),
+    /** Runs finished so far (a run started by a drop can be waited for with it). */
+    runs: () => app.runCount,
     /** 'running' or 'idle'. */
     state: () => (app.running ? 'running' : 'idle'),
     progress: () => app.lastProgress,

@@ -9,6 +9,7 @@ export class App {
   constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl }) {
     Object.assign(this, { bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl });
     this.running = false;
+    this.runCount = 0; // finished runs (scripts and tests wait on it)
     this.currentName = 'model';
     this.fitNext = true;
     this.lastError = null;
@@ -130,6 +131,7 @@ export class App {
       final = { state: 'failed', error: e.message };
     } finally {
       this.running = false;
+      this.runCount++;
       this.controls.setRunning(false);
     }
     this.lastProgress = final;

@@ -30,8 +30,9 @@ export class Controls {
     for (let t = 1; t <= n; t++) select.add(new Option(String(t), String(t)));
   }
 
+  /** All cores but one: the page, the compositor and (without a GPU) the rasteriser need one. */
   autoThreads() {
-    return Math.max(1, Math.min(navigator.hardwareConcurrency || 1, this.maxThreads));
+    return Math.max(1, Math.min((navigator.hardwareConcurrency || 2) - 1, this.maxThreads));
   }
 
   presetChanged() {

@@ -14,8 +14,11 @@ const SECTION_SIDES = { blue: 4, yellow: 3, red: 5 };
 export class Viewer {
   constructor(container) {
     this.container = container;
-    this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    // Often drawn by software (SwiftShader) on a busy CPU: no MSAA, and frames only when something
+    // changed, so the page's thread is not held up by a GPU process that is short of CPU.
+    this.renderer = new THREE.WebGLRenderer({ antialias: false });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio, 2));
+    this.needsRender = true;
     this.renderer.setClearColor(0x20242b);
     container.appendChild(this.renderer.domElement);
     this.scene = new THREE.Scene();
@@ -32,8 +35,19 @@ export class Viewer {
     this.scene.add(this.modelGroup);
     this.surfaceMesh = null;
     this.facesMesh = null;
-    this.struts = {}; // colour → {mesh, strutIds}
+    this.struts = {}; // colour → {mesh, ids, base}
     this.balls = null;
+    this.pool = {}; // instanced meshes kept between snapshots
+    // Geometries and materials live as long as the viewer (one shader program each).
+    const strutMaterial = () => new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.45, metalness: 0.05 });
+    this.shared = { ball: { geometry: new THREE.SphereGeometry(BALL_RADIUS, 14, 10),
+      material: new THREE.MeshStandardMaterial({ color: COLOURS.ball, roughness: 0.35 }) },
+    faces: new THREE.MeshStandardMaterial({ color: 0x9aa7b8, transparent: true, opacity: 0.45,
+      side: THREE.DoubleSide, depthWrite: false }) };
+    for (const colour of ['blue', 'yellow', 'red']) {
+      this.shared[colour] = { geometry: new THREE.CylinderGeometry(STRUT_RADIUS, STRUT_RADIUS, 1,
+        SECTION_SIDES[colour], 1), material: strutMaterial() };
+    }
     this.snapshot = null;
     this.showFaces = false;
     this.showSurface = false;
@@ -42,9 +56,18 @@ export class Viewer {
     new ResizeObserver(() => this.resize()).observe(container);
     this.resize();
     this.renderer.setAnimationLoop(() => {
-      this.controls.update();
-      this.renderer.render(this.scene, this.camera);
+      const moved = this.controls.update(); // true while the camera moves (also damping)
+      if (moved || this.needsRender) this.render();
     });
+  }
+
+  requestRender() {
+    this.needsRender = true;
+  }
+
+  render() {
+    this.needsRender = false;
+    this.renderer.render(this.scene, this.camera);
   }
 
   resize() {
@@ -53,22 +76,32 @@ export class Viewer {
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
+    this.requestRender();
   }
 
-  clearModel() {
-    for (const child of [...this.modelGroup.children]) {
-      this.modelGroup.remove(child);
-      child.geometry?.dispose();
-      child.material?.dispose();
+  /** An instanced mesh that is kept and grown, so a new snapshot costs buffer uploads only
+   * (re-creating materials would recompile shaders, which stalls the page for 100s of ms). */
+  pooledMesh(key, geometry, material, count) {
+    let mesh = this.pool[key];
+    if (!mesh || mesh.instanceMatrix.count < count) {
+      if (mesh) {
+        this.modelGroup.remove(mesh);
+        mesh.dispose();
+      }
+      mesh = new THREE.InstancedMesh(geometry, material, Math.max(16, Math.ceil(count * 1.5)));
+      mesh.frustumCulled = false;
+      this.pool[key] = mesh;
+      this.modelGroup.add(mesh);
     }
-    this.struts = {};
-    this.balls = null;
-    this.facesMesh = null;
+    mesh.count = count;
+    mesh.visible = count > 0;
+    mesh.boundingBox = null; // recomputed from the live instances when fitting
+    mesh.boundingSphere = null;
+    return mesh;
   }
 
   /** Shows a snapshot (protocol.js Snapshot); `fit` frames it. */
   setModel(snapshot, { fit = false } = {}) {
-    this.clearModel();
     this.snapshot = snapshot;
     const { positions, struts, kinds, triangles } = snapshot;
     this.modelGroup.scale.setScalar(snapshot.scale);
@@ -82,11 +115,9 @@ export class Viewer {
     const a = new THREE.Vector3(), b = new THREE.Vector3(), dir = new THREE.Vector3();
     const up = new THREE.Vector3(0, 1, 0), q = new THREE.Quaternion(), s = new THREE.Vector3();
     const m = new THREE.Matrix4();
+    this.struts = {};
     for (const [colour, ids] of Object.entries(byColour)) {
-      if (!ids.length) continue;
-      const geometry = new THREE.CylinderGeometry(STRUT_RADIUS, STRUT_RADIUS, 1, SECTION_SIDES[colour], 1);
-      const material = new THREE.MeshStandardMaterial({ color: 0xffffff, roughness: 0.45, metalness: 0.05 });
-      const mesh = new THREE.InstancedMesh(geometry, material, ids.length);
+      const mesh = this.pooledMesh(colour, this.shared[colour].geometry, this.shared[colour].material, ids.length);
       const base = new THREE.Color(COLOURS[colour]);
       ids.forEach((strut, k) => {
         a.fromArray(positions, 3 * struts[2 * strut]);
@@ -99,35 +130,35 @@ export class Viewer {
         mesh.setMatrixAt(k, m);
         mesh.setColorAt(k, base);
       });
-      this.modelGroup.add(mesh);
+      mesh.instanceMatrix.needsUpdate = true;
+      if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
       this.struts[colour] = { mesh, ids, base };
     }
 
     const nodeCount = positions.length / 3;
-    if (nodeCount) {
-      const geometry = new THREE.SphereGeometry(BALL_RADIUS, 18, 12);
-      const material = new THREE.MeshStandardMaterial({ color: COLOURS.ball, roughness: 0.35 });
-      const mesh = new THREE.InstancedMesh(geometry, material, nodeCount);
-      const p = new THREE.Vector3();
-      for (let i = 0; i < nodeCount; i++) mesh.setMatrixAt(i, m.makeTranslation(p.fromArray(positions, 3 * i)));
-      this.modelGroup.add(mesh);
-      this.balls = mesh;
-    }
+    const balls = this.pooledMesh('balls', this.shared.ball.geometry, this.shared.ball.material, nodeCount);
+    const p = new THREE.Vector3();
+    for (let i = 0; i < nodeCount; i++) balls.setMatrixAt(i, m.makeTranslation(p.fromArray(positions, 3 * i)));
+    balls.instanceMatrix.needsUpdate = true;
+    this.balls = balls;
 
+    if (this.facesMesh) {
+      this.modelGroup.remove(this.facesMesh);
+      this.facesMesh.geometry.dispose();
+      this.facesMesh = null;
+    }
     if (triangles.length) {
       const geometry = new THREE.BufferGeometry();
       geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
       geometry.setIndex(new THREE.BufferAttribute(triangles, 1));
       geometry.computeVertexNormals();
-      const material = new THREE.MeshStandardMaterial({
-        color: 0x9aa7b8, transparent: true, opacity: 0.45, side: THREE.DoubleSide, depthWrite: false,
-      });
-      this.facesMesh = new THREE.Mesh(geometry, material);
+      this.facesMesh = new THREE.Mesh(geometry, this.shared.faces);
       this.facesMesh.visible = this.showFaces;
       this.modelGroup.add(this.facesMesh);
     }
     if (this.highlighted) this.highlightKinds(this.highlighted);
     if (fit) this.fit();
+    this.requestRender();
   }
 
   /** The input surface (mesh units), drawn translucent when shown. */
@@ -149,16 +180,19 @@ export class Viewer {
     this.surfaceMesh = new THREE.Mesh(geometry, material);
     this.surfaceMesh.visible = this.showSurface;
     this.scene.add(this.surfaceMesh);
+    this.requestRender();
   }
 
   setFacesVisible(on) {
     this.showFaces = on;
     if (this.facesMesh) this.facesMesh.visible = on;
+    this.requestRender();
   }
 
   setSurfaceVisible(on) {
     this.showSurface = on;
     if (this.surfaceMesh) this.surfaceMesh.visible = on;
+    this.requestRender();
   }
 
   /** Highlights the struts whose kind is in `kindIds` (numbers 0..8); null restores the colours. */
@@ -171,8 +205,9 @@ export class Viewer {
         const colour = !kindIds ? base : kindIds.includes(kinds[strut]) ? glow : dim;
         mesh.setColorAt(k, colour);
       });
-      mesh.instanceColor.needsUpdate = true;
+      if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
     }
+    this.requestRender();
   }
 
   /** Frames the model (or the surface when there is no model). */
@@ -191,10 +226,12 @@ export class Viewer {
     this.camera.updateProjectionMatrix();
     this.controls.target.copy(sphere.center);
     this.controls.update();
+    this.requestRender();
   }
 
   /** Fraction of canvas pixels close to each strut colour (tests and the API use it). */
   colourCoverage() {
+    this.render(); // read in the same task as the draw (no preserveDrawingBuffer needed)
     const gl = this.renderer.getContext();
     const { width, height } = gl.canvas;
     const pixels = new Uint8Array(width * height * 4);
