@@ -42,7 +42,8 @@ nlohmann::json curve(const std::string &name, double seconds, int threads)
     options.seed = 1;
     options.progress_interval = seconds / 60.0;
     Annealer annealer(z0, context, options);
-    nlohmann::json points = nlohmann::json::array();
+    // The curve starts at the Z0's energy; the first progress sample comes one interval later.
+    nlohmann::json points = nlohmann::json::array({nlohmann::json::array({0.0, annealer.start_energy().total})});
     const AnnealResult result = annealer.run(
         [&](const AnnealProgress &p) { points.push_back({p.elapsed_seconds, p.energy.total}); });
     return {
