@@ -16,6 +16,7 @@ test('cancel within 0.5 s keeps a valid model, then a second run', async ({ page
     await window.__run;
     return idle;
   });
+  console.log(`cancel: idle ${ms.toFixed(0)} ms after the click`);
   expect(await page.evaluate(() => window.zomeify.state())).toBe('idle');
   expect(await page.evaluate(() => window.zomeify.progress().state)).toBe('cancelled');
   expect(ms, `cancel took ${ms.toFixed(0)} ms`).toBeLessThan(500);

@@ -12,6 +12,7 @@ test('cross-origin isolated, threaded build, sample model shown within 3 s', asy
   expect(s.struts).toBeGreaterThan(0);
   expect(s.source).toBe('file'); // the precomputed sample, not a run
   // performance.now() counts from the navigation's start.
+  console.log(`load: sample drawn at ${info.firstModelMs.toFixed(0)} ms, core ready with the sample at ${info.readyMs.toFixed(0)} ms`);
   expect(info.firstModelMs, `sample model drawn after ${info.firstModelMs?.toFixed(0)} ms; core ready and ` +
     `the sample loaded into it after ${info.readyMs?.toFixed(0)} ms (test saw ${ms} ms)`).toBeLessThan(3000);
   const c = await page.evaluate(() => window.zomeify.colourCoverage());
