@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
 
 #include "core/base/errors.h"
+#include "core/geom/triangle_estimate.h"
 
 namespace zomeify {
 namespace {
@@ -29,8 +31,8 @@ TriangleMesh validated(TriangleMesh mesh)
         {
             if (v >= mesh.positions.size())
             {
-                throw InvalidInputError("surface triangle " + std::to_string(t) + " uses vertex " +
-                                        std::to_string(v) + ", out of range");
+                throw InvalidInputError("surface triangle " + std::to_string(t) + " uses vertex " + std::to_string(v) +
+                                        ", out of range");
             }
         }
     }
@@ -44,20 +46,61 @@ double corner_angle(const Vec3& e1, const Vec3& e2)
     return std::atan2(e1.cross(e2).norm(), e1.dot(e2));
 }
 
-// Float box distances are within a few float epsilons of `magnitude` of the truth (beyond the
-// padding of the boxes); a margin of 1e-6 * magnitude covers that. Boxes are kept while their
-// squared distance is at most (best + margin)^2, rounded up, and never above FLT_MAX, so that
-// the empty child of a one-leaf root (box distance +inf) is never pushed.
-float window(double best_distance_squared, double margin)
+// Queries are done in float relative to the BVH origin while the magnitude (largest coordinate
+// of the query plus the mesh's half extent) stays within this range: squares of distances then
+// neither overflow nor lose precision to subnormals.
+constexpr double kFloatRangeMax = 1e15;
+constexpr double kFloatRangeMin = 1e-15;
+
+// Float box distances are within a few float epsilons of the magnitude of the truth (beyond the
+// padding of the boxes); a margin of 1e-6 * magnitude covers that.
+constexpr double kBoxMargin = 1e-6;
+
+// Candidates held before they are measured exactly (then the buffer starts over).
+constexpr int kCandidates = 32;
+
+// r² rounded up to float and never above FLT_MAX, so that the empty children of a node (box
+// distance +inf) are never kept.
+float squared_rounded_up(double r)
 {
-    const double r = std::sqrt(best_distance_squared) + margin;
     const double x = r * r;
     if (!(x < static_cast<double>(std::numeric_limits<float>::max())))
     {
         return std::numeric_limits<float>::max();
     }
-    const float f = static_cast<float>(x);
-    return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+    // Rounding to nearest float is off by at most 2^-24 relative; scaling up by more first makes
+    // the result an upper bound without a libm call.
+    return static_cast<float>(x * (1.0 + 1.2e-7));
+}
+
+// Sort key of a kept child: float bits of a non-negative distance order like the distances.
+uint64_t child_key(float distance_squared, uint32_t child)
+{
+    uint32_t bits = 0;
+    std::memcpy(&bits, &distance_squared, sizeof(bits));
+    return (static_cast<uint64_t>(bits) << 32) | child;
+}
+
+float key_distance_squared(uint64_t key)
+{
+    const auto bits = static_cast<uint32_t>(key >> 32);
+    float distance_squared = 0.0f;
+    std::memcpy(&distance_squared, &bits, sizeof(bits));
+    return distance_squared;
+}
+
+void compare_exchange(uint64_t& a, uint64_t& b)
+{
+    const uint64_t lo = std::min(a, b);
+    b = std::max(a, b);
+    a = lo;
+}
+
+simd::F4 load4(const std::array<float, 4>& values)
+{
+    simd::F4 v;
+    std::memcpy(&v, values.data(), sizeof(v));
+    return v;
 }
 
 // Starts loading what a stack entry points to while the traversal works on something else: a
@@ -98,22 +141,19 @@ SurfaceProjector::SurfaceProjector(TriangleMesh mesh, const BvhOptions& options)
         n = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
     }
     half_extent_ = 0.5 * bvh_.bounds().extent().maxCoeff();
-    std::vector<uint32_t> renumber(mesh_.positions.size(), BvhNode::kInvalid);
-    leaf_triangles_.reserve(mesh_.triangles.size());
-    for (const uint32_t t : bvh_.order())
+    blocks_.reserve(wide_.leaves().size());
+    slots_.reserve(4 * wide_.leaves().size());
+    const double sliver_width = TriangleBlockTolerance::kSliverWidth * half_extent_;
+    for (const WideBvhLeaf& leaf : wide_.leaves())
     {
-        std::array<uint32_t, 3> local{};
-        for (int k = 0; k < 3; ++k)
+        const uint32_t* ids = bvh_.order().data() + leaf.first;
+        blocks_.push_back(make_triangle_block(mesh_, ids, leaf.count, bvh_.origin(), sliver_width));
+        for (uint32_t lane = 0; lane < 4; ++lane)
         {
-            const uint32_t v = mesh_.triangles[t][k];
-            if (renumber[v] == BvhNode::kInvalid)
-            {
-                renumber[v] = static_cast<uint32_t>(leaf_vertices_.size());
-                leaf_vertices_.push_back(mesh_.positions[v]);
-            }
-            local[k] = renumber[v];
+            const uint32_t id = ids[lane < leaf.count ? lane : 0];
+            const auto& tri = mesh_.triangles[id];
+            slots_.push_back({mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]], id});
         }
-        leaf_triangles_.push_back(local);
     }
 }
 
@@ -142,108 +182,187 @@ ClosestPoint SurfaceProjector::project(const Vec3& p, uint32_t hint) const
 
 void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) const
 {
-    struct Entry
-    {
-        uint32_t child;
-        float distance_squared;
-    };
-    // Each level leaves at most three siblings behind, plus the four children of the last node.
-    Entry stack[3 * Bvh::kMaxDepth + 4];
-    int top = 0;
-
-    const WideBvhNode* nodes = wide_.nodes().data();
-    const std::array<uint32_t, 3>* triangles = leaf_triangles_.data();
-    const Vec3* vertices = leaf_vertices_.data();
-    const uint32_t* ids = bvh_.order().data();
     const Vec3& origin = bvh_.origin();
-    const float px = static_cast<float>(p.x() - origin.x());
-    const float py = static_cast<float>(p.y() - origin.y());
-    const float pz = static_cast<float>(p.z() - origin.z());
-    // Box distances are lower bounds up to float rounding (boxes rounded outward and padded);
-    // they are compared against the best distance widened by a margin for that rounding.
     const double magnitude =
         std::max({std::abs(p.x() - origin.x()), std::abs(p.y() - origin.y()), std::abs(p.z() - origin.z())}) +
         half_extent_;
-    const double margin = 1e-6 * magnitude;
-    float bound = window(best, margin);
+    if (!(magnitude <= kFloatRangeMax && half_extent_ >= kFloatRangeMin))
+    {
+        search_all(p, best, best_id);
+        return;
+    }
+
+    // Inner nodes put aside, nearest last. Each level leaves at most three siblings behind.
+    struct Entry
+    {
+        uint32_t node;
+        float distance_squared;
+    };
+    Entry stack[3 * Bvh::kMaxDepth + 4];
+    int top = 0;
+    // A triangle that may be the closest: leaf * 4 + lane, and its estimated squared distance.
+    struct Candidate
+    {
+        uint32_t slot;
+        float estimate;
+    };
+    Candidate candidates[kCandidates];
+    int held = 0;
+
+    const WideBvhNode* nodes = wide_.nodes().data();
+    const TriangleBlock* blocks = blocks_.data();
+    const simd::F4 px = simd::splat(static_cast<float>(p.x() - origin.x()));
+    const simd::F4 py = simd::splat(static_cast<float>(p.y() - origin.y()));
+    const simd::F4 pz = simd::splat(static_cast<float>(p.z() - origin.z()));
+    const simd::F4 zero = simd::splat(0.0f);
+    const double inside_margin = TriangleBlockTolerance::kInsideMargin * magnitude;
+    const simd::F4 inside_margin2 = simd::splat(static_cast<float>(inside_margin * inside_margin));
+    const double box_margin = kBoxMargin * magnitude;
+    const double slack = TriangleBlockTolerance::kSlack * magnitude;
+
+    // `upper` bounds the distance from p to S from above: by the best exact distance, and by every
+    // estimate plus its slack. A box farther than that (plus the box margin) holds nothing closer;
+    // a triangle whose estimate exceeds it by more than the slack is not the closest.
+    double upper = std::sqrt(best);
+    float lowest_estimate = std::numeric_limits<float>::infinity();
+    float node_window = squared_rounded_up(upper + box_margin);
+    float candidate_window = squared_rounded_up(upper + slack);
+    auto lower_upper = [&](double bound) {
+        if (bound < upper)
+        {
+            upper = bound;
+            node_window = squared_rounded_up(upper + box_margin);
+            candidate_window = squared_rounded_up(upper + slack);
+        }
+    };
+    // Measures the held candidates that are still in the window exactly, in double.
+    auto measure = [&] {
+        for (int i = 0; i < held; ++i)
+        {
+            if (candidates[i].estimate > candidate_window)
+            {
+                continue;
+            }
+            const SlotTriangle& t = slots_[candidates[i].slot];
+            const double dist = point_triangle_distance_squared(p, t.a, t.b, t.c);
+            if (dist < best)
+            {
+                best = dist;
+                best_id = t.id;
+            }
+        }
+        held = 0;
+        lower_upper(std::sqrt(best));
+    };
+    // Estimates a leaf's triangles; keeps those in the window as candidates (without branches).
+    auto visit_leaf = [&](uint32_t child) {
+        const uint32_t leaf = WideBvhNode::leaf_index(child);
+        const uint32_t lanes = WideBvhNode::leaf_count(child);
+        const simd::F4 estimate = estimate_distances_squared(blocks[leaf], px, py, pz, inside_margin2);
+        for (uint32_t lane = 0; lane < 4; ++lane)
+        {
+            candidates[held] = {leaf * 4 + lane, estimate[lane]};
+            held += lane < lanes && estimate[lane] <= candidate_window ? 1 : 0;
+        }
+        // Unused lanes repeat lane 0, so the minimum over all four is the leaf's.
+        const float lowest = std::min(std::min(estimate[0], estimate[1]), std::min(estimate[2], estimate[3]));
+        if (lowest < lowest_estimate)
+        {
+            lowest_estimate = lowest;
+            lower_upper(std::sqrt(static_cast<double>(lowest)) + slack);
+        }
+        if (held > kCandidates - 4)
+        {
+            measure();
+        }
+    };
 
     uint32_t node_index = 0;
     for (;;)
     {
         const WideBvhNode& node = nodes[node_index];
-        // Four box distances in straight-line code the compiler can keep in vector registers.
-        float d[4];
-        for (int j = 0; j < 4; ++j)
-        {
-            const float dx = std::max(std::max(node.min_x[j] - px, px - node.max_x[j]), 0.0f);
-            const float dy = std::max(std::max(node.min_y[j] - py, py - node.max_y[j]), 0.0f);
-            const float dz = std::max(std::max(node.min_z[j] - pz, pz - node.max_z[j]), 0.0f);
-            d[j] = dx * dx + dy * dy + dz * dz;
-        }
-        // Survivors go on the stack farthest first, so the nearest is popped next.
-        Entry near[4];
+        const simd::F4 dx = simd::max(simd::max(load4(node.min_x) - px, px - load4(node.max_x)), zero);
+        const simd::F4 dy = simd::max(simd::max(load4(node.min_y) - py, py - load4(node.max_y)), zero);
+        const simd::F4 dz = simd::max(simd::max(load4(node.min_z) - pz, pz - load4(node.max_z)), zero);
+        const simd::F4 d = dx * dx + dy * dy + dz * dz;
+        const simd::I4 keep = d <= simd::splat(node_window);
+        // Children in the window, nearest first, by a sorting network on (distance, child) keys;
+        // empty children have infinite box distances and are never kept.
+        uint64_t key[4];
         int count = 0;
         for (int j = 0; j < 4; ++j)
         {
-            if (node.child[j] != WideBvhNode::kEmpty && d[j] <= bound)
-            {
-                Entry e{node.child[j], d[j]};
-                int k = count++;
-                for (; k > 0 && near[k - 1].distance_squared < e.distance_squared; --k)
-                {
-                    near[k] = near[k - 1];
-                }
-                near[k] = e;
-            }
+            key[j] = keep[j] != 0 ? child_key(d[j], node.child[j]) : ~uint64_t{0};
+            count += keep[j] != 0 ? 1 : 0;
         }
+        compare_exchange(key[0], key[1]);
+        compare_exchange(key[2], key[3]);
+        compare_exchange(key[0], key[2]);
+        compare_exchange(key[1], key[3]);
+        compare_exchange(key[1], key[2]);
+        // Leaves are estimated on the spot, nearest first (cheap, and they tighten the window);
+        // then the nearest inner child still in the window is walked next and the others are put
+        // aside, farther first, and prefetched.
         for (int k = 0; k < count; ++k)
         {
-            const uint32_t c = near[k].child;
-            if (WideBvhNode::is_leaf(c))
+            const auto child = static_cast<uint32_t>(key[k]);
+            if (WideBvhNode::is_leaf(child) && key_distance_squared(key[k]) <= node_window)
             {
-                prefetch(triangles + WideBvhNode::leaf_first(c));
+                visit_leaf(child);
             }
-            else
-            {
-                // A node is two cache lines.
-                prefetch(nodes + c);
-                prefetch(reinterpret_cast<const char*>(nodes + c) + 64);
-            }
-            stack[top++] = near[k];
         }
-        // Pop the nearest pending entry that may still hold something closer; leaves are tested
-        // on the spot, an inner node ends the loop and is expanded above.
-        bool descend = false;
-        while (top > 0)
+        uint32_t next = WideBvhNode::kEmpty;
+        float next_distance_squared = 0.0f;
+        for (int k = count - 1; k >= 0; --k)
         {
-            const Entry e = stack[--top];
-            if (e.distance_squared > bound)
+            const auto child = static_cast<uint32_t>(key[k]);
+            const float distance_squared = key_distance_squared(key[k]);
+            if (WideBvhNode::is_leaf(child) || distance_squared > node_window)
             {
                 continue;
             }
-            if (!WideBvhNode::is_leaf(e.child))
+            if (next != WideBvhNode::kEmpty)
             {
-                node_index = e.child;
-                descend = true;
-                break;
+                prefetch(nodes + next);
+                prefetch(reinterpret_cast<const char*>(nodes + next) + 64);
+                stack[top++] = {next, next_distance_squared};
             }
-            const uint32_t first = WideBvhNode::leaf_first(e.child);
-            const uint32_t end = first + WideBvhNode::leaf_count(e.child);
-            for (uint32_t k = first; k < end; ++k)
-            {
-                const std::array<uint32_t, 3>& t = triangles[k];
-                const double dist = point_triangle_distance_squared(p, vertices[t[0]], vertices[t[1]], vertices[t[2]]);
-                if (dist < best)
-                {
-                    best = dist;
-                    best_id = ids[k];
-                    bound = window(best, margin);
-                }
-            }
+            next = child;
+            next_distance_squared = distance_squared;
         }
-        if (!descend)
+        if (next != WideBvhNode::kEmpty)
         {
+            node_index = next;
+            continue;
+        }
+        // Pop the nearest node put aside that may still hold something closer.
+        while (top > 0 && stack[top - 1].distance_squared > node_window)
+        {
+            --top;
+        }
+        if (top == 0)
+        {
+            measure();
             return;
+        }
+        node_index = stack[--top].node;
+    }
+}
+
+void SurfaceProjector::search_all(const Vec3& p, double& best, uint32_t& best_id) const
+{
+    const std::vector<WideBvhLeaf>& leaves = wide_.leaves();
+    for (size_t leaf = 0; leaf < leaves.size(); ++leaf)
+    {
+        for (uint32_t lane = 0; lane < leaves[leaf].count; ++lane)
+        {
+            const SlotTriangle& t = slots_[4 * leaf + lane];
+            const double dist = point_triangle_distance_squared(p, t.a, t.b, t.c);
+            if (dist < best)
+            {
+                best = dist;
+                best_id = t.id;
+            }
         }
     }
 }
@@ -252,10 +371,10 @@ size_t SurfaceProjector::memory_bytes() const
 {
     return sizeof(*this) + mesh_.positions.capacity() * sizeof(Vec3) +
            mesh_.triangles.capacity() * sizeof(mesh_.triangles[0]) +
-           (vertex_normals_.capacity() + face_normals_.capacity() + leaf_vertices_.capacity()) * sizeof(Vec3) +
-           leaf_triangles_.capacity() * sizeof(leaf_triangles_[0]) + bvh_.nodes().capacity() * sizeof(BvhNode) +
-           wide_.nodes().capacity() * sizeof(WideBvhNode) +
-           bvh_.order().capacity() * sizeof(uint32_t);
+           (vertex_normals_.capacity() + face_normals_.capacity()) * sizeof(Vec3) +
+           slots_.capacity() * sizeof(SlotTriangle) + bvh_.nodes().capacity() * sizeof(BvhNode) +
+           wide_.nodes().capacity() * sizeof(WideBvhNode) + wide_.leaves().capacity() * sizeof(WideBvhLeaf) +
+           blocks_.capacity() * sizeof(TriangleBlock) + bvh_.order().capacity() * sizeof(uint32_t);
 }
 
 ClosestPoint SurfaceProjector::finish(const Vec3& p, uint32_t id) const

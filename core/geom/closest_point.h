@@ -9,19 +9,20 @@
 
 #include "core/geom/bvh.h"
 #include "core/geom/point_triangle.h"
-#include "core/geom/wide_bvh.h"
+#include "core/geom/triangle_block.h"
 #include "core/geom/triangle_mesh.h"
+#include "core/geom/wide_bvh.h"
 
 namespace zomeify {
 
 //! The answer of one π(p) query.
 struct ClosestPoint
 {
-    Vec3 point = Vec3::Zero();       //!< π(p)
-    Vec3 normal = Vec3::UnitZ();     //!< unit outward normal at π(p), see SurfaceProjector
-    Vec3 barycentric = Vec3::Zero(); //!< weights of the triangle's corners at π(p)
-    double distance_squared = 0.0;   //!< ‖p − π(p)‖²
-    uint32_t triangle = 0;           //!< index into mesh().triangles
+    Vec3 point = Vec3::Zero();                       //!< π(p)
+    Vec3 normal = Vec3::UnitZ();                     //!< unit outward normal at π(p), see SurfaceProjector
+    Vec3 barycentric = Vec3::Zero();                 //!< weights of the triangle's corners at π(p)
+    double distance_squared = 0.0;                   //!< ‖p − π(p)‖²
+    uint32_t triangle = 0;                           //!< index into mesh().triangles
     TriangleFeature feature = TriangleFeature::face; //!< where on the triangle π(p) lies
 };
 
@@ -30,12 +31,16 @@ struct ClosestPoint
 //! `project` may be called from any number of threads at once (no shared mutable state, no heap
 //! allocation per query).
 //!
-//! A query walks the BVH nearest box first and measures candidate triangles in double. Random
-//! queries are bound by memory latency, not arithmetic, so the data a query touches is kept
-//! small: a 4-wide copy of the BVH (WideBvh, 128-byte nodes, a third of the binary node count),
-//! 12-byte triangles indexing a vertex array renumbered in leaf order (so neighbouring leaves
-//! share cache lines): about 0.8 MB for 20k triangles. Children are prefetched when pushed.
-//! p must be finite.
+//! A query walks a 4-wide BVH (WideBvh) nearest box first, four box distances at a time in float
+//! SIMD. Each leaf is a TriangleBlock: the distances to its (up to) four triangles are estimated
+//! together in float, with a proven error bound (TriangleBlockTolerance). Only triangles whose
+//! estimate is within that bound of the best estimate are kept; at the end (usually one or a few
+//! triangles sharing the closest feature) they are measured exactly in double, and the closest
+//! wins. So the answer is the exact double result of the closest triangle, as a brute-force scan
+//! would give, while the search itself does no double arithmetic. Children are prefetched when
+//! pushed: random queries are bound by memory latency as much as by arithmetic.
+//! p must be finite. Queries very far from the mesh (beyond 1e15 times its size, where float
+//! squares overflow) or on a mesh smaller than 1e-15 fall back to an exact scan of all triangles.
 //!
 //! The normal is the angle-weighted vertex normals (Thürmer & Wüthrich) of the closest triangle,
 //! interpolated with the barycentrics of π(p) and normalised (design §3.3). Where that sum
@@ -68,6 +73,8 @@ public:
 private:
     //! Lowers (best_distance_squared, best_id) to the closest triangle; best_id stays if none is closer.
     void search(const Vec3& p, double& best_distance_squared, uint32_t& best_id) const;
+    //! The same by measuring every triangle: the fallback for queries outside float range.
+    void search_all(const Vec3& p, double& best_distance_squared, uint32_t& best_id) const;
     //! The full answer on triangle `id`.
     ClosestPoint finish(const Vec3& p, uint32_t id) const;
 
@@ -79,10 +86,17 @@ private:
     //! Half the largest extent of the mesh: with the query's offset from the BVH origin, the
     //! magnitude that float rounding of box distances is relative to.
     double half_extent_ = 0.0;
-    //! Triangles in the BVH's leaf order, indexing leaf_vertices_.
-    std::vector<std::array<uint32_t, 3>> leaf_triangles_;
-    //! The mesh's positions renumbered by first use in leaf order.
-    std::vector<Vec3> leaf_vertices_;
+    //! A triangle's corners in double and its index in mesh().triangles: what the exact
+    //! measurement of a candidate reads, in one place.
+    struct SlotTriangle
+    {
+        Vec3 a, b, c;
+        uint32_t id;
+    };
+    //! One block per leaf of wide_, in the same order.
+    std::vector<TriangleBlock> blocks_;
+    //! Four per leaf (slot = leaf * 4 + lane), like the blocks' lanes; unused lanes repeat lane 0.
+    std::vector<SlotTriangle> slots_;
 };
 
 } // namespace zomeify

@@ -77,16 +77,28 @@ inline TrianglePoint closest_on_edges(const Vec3& p, const Vec3& a, const Vec3& 
             edge_feature(t2, TriangleFeature::edge20, TriangleFeature::vertex2, TriangleFeature::vertex0)};
 }
 
+//! True if two corners coincide. The region walk then divides by a zero edge length, or (corners
+//! a and b equal) takes the corner region for the whole edge ac; the edges alone are the answer.
+inline bool has_zero_edge(const Vec3& ab, const Vec3& ac)
+{
+    return ab == Vec3::Zero() || ac == Vec3::Zero() || ab == ac;
+}
+
 } // namespace detail
 
 //! Closest point of triangle (a, b, c) to `p`, by Voronoi regions of the corners, edges and face
 //! (the classic region walk, Ericson, Real-Time Collision Detection §5.1.5). Robust for degenerate
-//! input: every division is guarded, and when the face region is reached with a (near) zero-area
-//! triangle or inconsistent signs from cancellation, the answer falls back to the closest edge point.
+//! input: two equal corners go straight to the closest edge point; every division is guarded, and
+//! when the face region is reached with a (near) zero-area triangle or inconsistent signs from
+//! cancellation, the answer falls back to the closest edge point.
 inline TrianglePoint closest_point_on_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 {
     const Vec3 ab = b - a;
     const Vec3 ac = c - a;
+    if (detail::has_zero_edge(ab, ac))
+    {
+        return detail::closest_on_edges(p, a, b, c);
+    }
     const Vec3 ap = p - a;
     const double d1 = ab.dot(ap);
     const double d2 = ac.dot(ap);
@@ -159,6 +171,10 @@ inline double point_triangle_distance_squared(const Vec3& p, const Vec3& a, cons
 {
     const Vec3 ab = b - a;
     const Vec3 ac = c - a;
+    if (detail::has_zero_edge(ab, ac))
+    {
+        return detail::closest_on_edges(p, a, b, c).distance_squared;
+    }
     const Vec3 ap = p - a;
     const double d1 = ab.dot(ap);
     const double d2 = ac.dot(ap);

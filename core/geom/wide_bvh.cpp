@@ -27,7 +27,10 @@ Ref child_ref(const BvhNode& node, int side)
 class Collapser
 {
 public:
-    Collapser(const Bvh& bvh, std::vector<WideBvhNode>& out) : bvh_(bvh), out_(out) {}
+    Collapser(const Bvh& bvh, std::vector<WideBvhNode>& out, std::vector<WideBvhLeaf>& leaves)
+        : bvh_(bvh), out_(out), leaves_(leaves)
+    {
+    }
 
     int depth() const { return depth_; }
 
@@ -80,7 +83,8 @@ public:
             uint32_t c = 0;
             if (refs[j].count > 0)
             {
-                c = WideBvhNode::make_leaf(refs[j].child, refs[j].count);
+                c = WideBvhNode::make_leaf(static_cast<uint32_t>(leaves_.size()), refs[j].count);
+                leaves_.push_back({refs[j].child, refs[j].count});
             }
             else
             {
@@ -112,6 +116,7 @@ private:
 
     const Bvh& bvh_;
     std::vector<WideBvhNode>& out_;
+    std::vector<WideBvhLeaf>& leaves_;
     int depth_ = 0;
 };
 
@@ -119,12 +124,13 @@ private:
 
 WideBvh::WideBvh(const Bvh& bvh)
 {
-    if (bvh.order().size() >= WideBvhNode::kMaxLeafFirst)
+    if (bvh.order().size() >= WideBvhNode::kMaxLeaves)
     {
         throw InvalidInputError("BVH: too many primitives for the wide layout");
     }
     nodes_.reserve(bvh.nodes().size() / 2 + 1);
-    Collapser collapser(bvh, nodes_);
+    leaves_.reserve(bvh.leaf_count());
+    Collapser collapser(bvh, nodes_, leaves_);
     collapser.emit(0, 1);
     depth_ = collapser.depth();
 }

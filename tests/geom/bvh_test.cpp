@@ -67,6 +67,7 @@ void check_wide(const Bvh& bvh, const std::vector<Box3>& boxes)
     std::vector<int> seen(boxes.size(), 0);
     std::vector<uint32_t> pending{0u};
     size_t visited = 0;
+    size_t leaves = 0;
     while (!pending.empty())
     {
         const uint32_t index = pending.back();
@@ -88,7 +89,11 @@ void check_wide(const Bvh& bvh, const std::vector<Box3>& boxes)
                 continue;
             }
             const Box3 box = WideBvh::child_box(node, j);
-            for (uint32_t k = WideBvhNode::leaf_first(c); k < WideBvhNode::leaf_first(c) + WideBvhNode::leaf_count(c); ++k)
+            ASSERT_LT(WideBvhNode::leaf_index(c), wide.leaves().size());
+            const WideBvhLeaf& leaf = wide.leaves()[WideBvhNode::leaf_index(c)];
+            ASSERT_EQ(leaf.count, WideBvhNode::leaf_count(c));
+            ++leaves;
+            for (uint32_t k = leaf.first; k < leaf.first + leaf.count; ++k)
             {
                 const uint32_t prim = bvh.order()[k];
                 ++seen[prim];
@@ -98,6 +103,8 @@ void check_wide(const Bvh& bvh, const std::vector<Box3>& boxes)
         }
     }
     EXPECT_EQ(visited, wide.nodes().size());
+    EXPECT_EQ(leaves, wide.leaves().size());
+    EXPECT_EQ(leaves, bvh.leaf_count());
     EXPECT_LE(wide.depth(), bvh.depth());
     for (size_t i = 0; i < seen.size(); ++i)
     {

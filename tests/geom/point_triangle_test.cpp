@@ -76,6 +76,25 @@ TEST(GeomPointTriangle, RobustOnSliversAndDegenerateTriangles)
     }
 }
 
+TEST(GeomPointTriangle, AnyTwoCoincidentCornersMeasureTheRemainingSegment)
+{
+    // With a == b the region walk alone would take corner a's region for the whole segment ac.
+    std::mt19937 rng(3);
+    for (int i = 0; i < 6000; ++i)
+    {
+        const Vec3 x = random_vec(rng, 1.0);
+        const Vec3 y = random_vec(rng, 1.0);
+        const Vec3 corners[3][3] = {{x, x, y}, {x, y, x}, {y, x, x}};
+        const Vec3(&t)[3] = corners[i % 3];
+        const Vec3 p = random_vec(rng, 2.0);
+        const double expected = test::reference_triangle_distance_squared(p, t[0], t[1], t[2]);
+        const TrianglePoint r = closest_point_on_triangle(p, t[0], t[1], t[2]);
+        expect_consistent(r, p, t[0], t[1], t[2]);
+        EXPECT_NEAR(r.distance_squared, expected, 1e-12);
+        EXPECT_NEAR(point_triangle_distance_squared(p, t[0], t[1], t[2]), expected, 1e-12);
+    }
+}
+
 TEST(GeomPointTriangle, ReportsTheFeature)
 {
     const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0);
