@@ -153,17 +153,18 @@ export function buildScene(THREE, camera) {
 
   /** Fractions of the pixels (RGBA bytes) close to each strut colour and to the background. */
   function colourCoverage(pixels) {
-    const count = { blue: 0, yellow: 0, red: 0, background: 0 };
+    const count = { blue: 0, yellow: 0, red: 0, highlight: 0, background: 0 };
     for (let i = 0; i < pixels.length; i += 4) {
       const r = pixels[i], g = pixels[i + 1], b = pixels[i + 2];
       if (r === BACKGROUND[0] && g === BACKGROUND[1] && b === BACKGROUND[2]) count.background++;
+      else if (g > 110 && g > r * 1.8 && g > b * 1.3) count.highlight++;
       else if (b > 110 && b > r * 1.6 && b > g * 1.2) count.blue++;
       else if (r > 130 && g > 100 && b < r * 0.5 && g > r * 0.55) count.yellow++;
       else if (r > 110 && g < r * 0.45 && b < r * 0.45) count.red++;
     }
     const total = pixels.length / 4;
     return { blue: count.blue / total, yellow: count.yellow / total, red: count.red / total,
-      background: count.background / total };
+      highlight: count.highlight / total, background: count.background / total };
   }
 
   return { root, setModel, setSurface, setVisibility, highlightKinds, colourCoverage };
