@@ -31,7 +31,7 @@ val error_object(const std::string &message)
 
 class WebSession
 {
-  public:
+public:
     std::string load_mesh(const std::string &bytes, const std::string &name) { return s_.load_mesh(bytes, name); }
     std::string load_model(const std::string &bytes, const std::string &name) { return s_.load_model(bytes, name); }
     std::string open_link(const std::string &link) { return s_.open_link(link); }
@@ -130,7 +130,7 @@ class WebSession
         return out;
     }
 
-  private:
+private:
     Session s_;
 };
 

@@ -10,14 +10,14 @@ namespace zomeify::web
 
 struct RunOptions
 {
-    int resolution = 12;       //!< cells along the longest side for Z0
-    double seconds = 10.0;     //!< annealing time budget
+    int resolution = 12;   //!< cells along the longest side for Z0
+    double seconds = 10.0; //!< annealing time budget
     //! > 0: a proposal budget instead of the time budget (with one thread and a fixed seed the
     //! run is then deterministic, bit-identical to the native CLI).
     uint64_t proposals = 0;
-    bool initial_only = false; //!< stop after Z0
+    bool initial_only = false;  //!< stop after Z0
     long long target_nodes = 0; //!< N_target; 0 = the node count of Z0
-    int threads = 1;           //!< annealing threads (clamped to what the build offers)
+    int threads = 1;            //!< annealing threads (clamped to what the build offers)
     uint64_t seed = 1;
     // Energy weights (design.md §3.3); the page folds them away under "advanced".
     double w_dist = 10.0;

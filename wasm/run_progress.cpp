@@ -14,12 +14,18 @@ const char *state_name(RunState s)
 {
     switch (s)
     {
-    case RunState::Idle: return "idle";
-    case RunState::Initial: return "initial";
-    case RunState::Annealing: return "annealing";
-    case RunState::Done: return "done";
-    case RunState::Cancelled: return "cancelled";
-    case RunState::Failed: return "failed";
+    case RunState::Idle:
+        return "idle";
+    case RunState::Initial:
+        return "initial";
+    case RunState::Annealing:
+        return "annealing";
+    case RunState::Done:
+        return "done";
+    case RunState::Cancelled:
+        return "cancelled";
+    case RunState::Failed:
+        return "failed";
     }
     return "idle";
 }

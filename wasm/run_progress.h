@@ -38,14 +38,17 @@ struct RunProgress
     size_t nodes = 0;
     size_t struts = 0;
     int threads = 1;
-    bool annealer = false;  //!< false: Z0 only (initial_only)
-    bool valid = false;     //!< at the end: the model passed validate()
-    long long genus = 0;    //!< at the end: genus of the model
+    bool annealer = false; //!< false: Z0 only (initial_only)
+    bool valid = false;    //!< at the end: the model passed validate()
+    long long genus = 0;   //!< at the end: genus of the model
     long long surface_genus = 0;
-    std::string note;       //!< e.g. the advisor's hint
+    std::string note; //!< e.g. the advisor's hint
     std::string error;
 
-    bool finished() const { return state == RunState::Done || state == RunState::Cancelled || state == RunState::Failed; }
+    bool finished() const
+    {
+        return state == RunState::Done || state == RunState::Cancelled || state == RunState::Failed;
+    }
     //! One JSON object (keys as the fields above; state as a word).
     std::string json() const;
 };
@@ -53,7 +56,7 @@ struct RunProgress
 //! Shared between the worker thread and the run thread.
 class RunControl
 {
-  public:
+public:
     void request_cancel() { cancel_.store(true); }
     bool cancel_requested() const { return cancel_.load(); }
     const std::atomic<bool> &cancel_flag() const { return cancel_; }
@@ -83,7 +86,7 @@ class RunControl
     //! Called often by the run (on its own thread); reports when a reporter is set and due.
     void tick();
 
-  private:
+private:
     std::atomic<bool> cancel_{false};
     mutable std::mutex mutex_;
     RunProgress progress_;

@@ -1,7 +1,6 @@
 #include "wasm/session.h"
 
 #include <algorithm>
-#include <chrono>
 #include <nlohmann/json.hpp>
 
 #include "core/base/errors.h"
@@ -117,83 +116,91 @@ bool Session::busy() const
 
 std::string Session::load_mesh(const std::string &bytes, const std::string &file_name)
 {
-    return guarded([&] {
-        if (busy())
-            throw InvalidInputError("a run is in progress; cancel it first");
-        if (is_model_file_name(file_name))
-            return load_model(bytes, file_name);
-        if (!is_mesh_file_name(file_name))
-            throw InvalidInputError(file_name + ": unknown file type (use .obj .stl .ply .off .gltf .glb, or a "
-                                                ".zome.json / .vef model)");
-        if (bytes.empty())
-            throw InvalidInputError(file_name + ": the file is empty");
-        const std::span<const uint8_t> data(reinterpret_cast<const uint8_t *>(bytes.data()), bytes.size());
-        PolygonSoup soup = read_mesh_buffer(data, file_name);
-        PreparedSurface prepared = prepare_surface(soup);
-        auto loaded = std::make_unique<LoadedSurface>();
-        loaded->mesh = prepared.mesh;
-        loaded->report = prepared.report;
-        loaded->projector = std::make_unique<SurfaceProjector>(prepared.mesh);
-        loaded->inside = std::make_unique<InsideTest>(*loaded->projector);
-        surface_ = std::move(loaded);
-        surface_name_ = file_name;
-        nlohmann::json out;
-        out["ok"] = true;
-        out["kind"] = "mesh";
-        out["report"] = nlohmann::json::parse(surface_report_json(surface_->report, file_name));
-        return out.dump();
-    });
+    return guarded(
+        [&]
+        {
+            if (busy())
+                throw InvalidInputError("a run is in progress; cancel it first");
+            if (is_model_file_name(file_name))
+                return load_model(bytes, file_name);
+            if (!is_mesh_file_name(file_name))
+                throw InvalidInputError(file_name + ": unknown file type (use .obj .stl .ply .off .gltf .glb, or a "
+                                                    ".zome.json / .vef model)");
+            if (bytes.empty())
+                throw InvalidInputError(file_name + ": the file is empty");
+            const std::span<const uint8_t> data(reinterpret_cast<const uint8_t *>(bytes.data()), bytes.size());
+            PolygonSoup soup = read_mesh_buffer(data, file_name);
+            PreparedSurface prepared = prepare_surface(soup);
+            auto loaded = std::make_unique<LoadedSurface>();
+            loaded->mesh = prepared.mesh;
+            loaded->report = prepared.report;
+            loaded->projector = std::make_unique<SurfaceProjector>(prepared.mesh);
+            loaded->inside = std::make_unique<InsideTest>(*loaded->projector);
+            surface_ = std::move(loaded);
+            surface_name_ = file_name;
+            nlohmann::json out;
+            out["ok"] = true;
+            out["kind"] = "mesh";
+            out["report"] = nlohmann::json::parse(surface_report_json(surface_->report, file_name));
+            return out.dump();
+        });
 }
 
 std::string Session::load_model(const std::string &bytes, const std::string &file_name)
 {
-    return guarded([&] {
-        if (busy())
-            throw InvalidInputError("a run is in progress; cancel it first");
-        if (bytes.empty())
-            throw InvalidInputError(file_name + ": the file is empty");
-        ZomeModel m = read_model_buffer(bytes, file_name);
-        parts_list(m); // rejects struts that are not Zome vectors before the model is shown
-        set_model(std::move(m), "file");
-        return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
-    });
+    return guarded(
+        [&]
+        {
+            if (busy())
+                throw InvalidInputError("a run is in progress; cancel it first");
+            if (bytes.empty())
+                throw InvalidInputError(file_name + ": the file is empty");
+            ZomeModel m = read_model_buffer(bytes, file_name);
+            parts_list(m); // rejects struts that are not Zome vectors before the model is shown
+            set_model(std::move(m), "file");
+            return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
+        });
 }
 
 std::string Session::open_link(const std::string &link)
 {
-    return guarded([&] {
-        if (busy())
-            throw InvalidInputError("a run is in progress; cancel it first");
-        ZomeModel m = decode_share_link(link);
-        set_model(std::move(m), "link");
-        return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
-    });
+    return guarded(
+        [&]
+        {
+            if (busy())
+                throw InvalidInputError("a run is in progress; cancel it first");
+            ZomeModel m = decode_share_link(link);
+            set_model(std::move(m), "link");
+            return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
+        });
 }
 
 std::string Session::estimate(int resolution)
 {
-    return guarded([&] {
-        if (!surface_)
-            throw InvalidInputError("no mesh loaded");
-        if (busy())
-            throw InvalidInputError("a run is in progress");
-        if (resolution < 2 || resolution > 256)
-            throw InvalidInputError("resolution must be between 2 and 256 cells");
-        const InitialModel z0 =
-            build_initial_model(surface_->mesh, surface_->is_inside(), z0_options(resolution, surface_->report.genus));
-        nlohmann::json out;
-        out["ok"] = true;
-        out["resolution"] = resolution;
-        out["nodes"] = z0.model.nodes.size();
-        out["struts"] = z0.model.struts.size();
-        out["valid"] = z0.report.valid;
-        out["genus"] = z0.report.topology.genus;
-        out["surface_genus"] = surface_->report.genus;
-        out["kept"] = z0.report.valid && z0.report.topology.genus == surface_->report.genus;
-        out["advice"] = z0.report.valid ? advice_for(*surface_, resolution, z0.report.topology.genus) : "";
-        out["seconds"] = z0.report.seconds;
-        return out.dump();
-    });
+    return guarded(
+        [&]
+        {
+            if (!surface_)
+                throw InvalidInputError("no mesh loaded");
+            if (busy())
+                throw InvalidInputError("a run is in progress");
+            if (resolution < 2 || resolution > 256)
+                throw InvalidInputError("resolution must be between 2 and 256 cells");
+            const InitialModel z0 = build_initial_model(surface_->mesh, surface_->is_inside(),
+                                                        z0_options(resolution, surface_->report.genus));
+            nlohmann::json out;
+            out["ok"] = true;
+            out["resolution"] = resolution;
+            out["nodes"] = z0.model.nodes.size();
+            out["struts"] = z0.model.struts.size();
+            out["valid"] = z0.report.valid;
+            out["genus"] = z0.report.topology.genus;
+            out["surface_genus"] = surface_->report.genus;
+            out["kept"] = z0.report.valid && z0.report.topology.genus == surface_->report.genus;
+            out["advice"] = z0.report.valid ? advice_for(*surface_, resolution, z0.report.topology.genus) : "";
+            out["seconds"] = z0.report.seconds;
+            return out.dump();
+        });
 }
 
 void Session::set_model(ZomeModel model, std::string source)
@@ -236,26 +243,32 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
         a.energy.w_fairing = options.w_fair;
         a.energy.w_complexity = options.w_complex;
         a.progress_interval = 0.1;
-        control.update([&](RunProgress &p) {
-            p.state = RunState::Initial;
-            p.budget_seconds = options.proposals > 0 ? 0.0 : options.seconds;
-            p.threads = a.threads;
-            p.annealer = !options.initial_only;
-        });
+        control.update(
+            [&](RunProgress &p)
+            {
+                p.state = RunState::Initial;
+                p.budget_seconds = options.proposals > 0 ? 0.0 : options.seconds;
+                p.threads = a.threads;
+                p.annealer = !options.initial_only;
+            });
 
         double last_snapshot = -1.0;
         PipelineCallbacks callbacks;
         callbacks.cancel = &control.cancel_flag();
-        callbacks.initial = [&](const ZomeModel &z0) {
+        callbacks.initial = [&](const ZomeModel &z0)
+        {
             set_model(z0, "run");
-            control.update([&](RunProgress &p) {
-                p.state = options.initial_only ? RunState::Initial : RunState::Annealing;
-                p.nodes = z0.nodes.size();
-                p.struts = z0.struts.size();
-                p.seconds = clock.seconds();
-            });
+            control.update(
+                [&](RunProgress &p)
+                {
+                    p.state = options.initial_only ? RunState::Initial : RunState::Annealing;
+                    p.nodes = z0.nodes.size();
+                    p.struts = z0.struts.size();
+                    p.seconds = clock.seconds();
+                });
         };
-        callbacks.progress = [&](const AnnealProgress &ap, Annealer &annealer) {
+        callbacks.progress = [&](const AnnealProgress &ap, Annealer &annealer)
+        {
             // The model goes out a few times a second (the page draws at least two per second);
             // a snapshot costs a copy of the mesh under the commit lock, so not on every report.
             // Not on the final report: the engine makes it under its commit lock, which
@@ -266,94 +279,105 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
                 last_snapshot = now;
                 set_model(annealer.snapshot(), "run");
             }
-            control.update([&](RunProgress &p) {
-                p.state = RunState::Annealing;
-                p.seconds = now;
-                p.fraction = ap.fraction;
-                p.temperature = ap.temperature;
-                p.energy = ap.energy.total;
-                p.best_energy = ap.best_energy;
-                p.proposals = ap.proposals;
-                p.commits = ap.commits;
-                p.nodes = ap.nodes;
-                p.struts = ap.struts;
-            });
+            control.update(
+                [&](RunProgress &p)
+                {
+                    p.state = RunState::Annealing;
+                    p.seconds = now;
+                    p.fraction = ap.fraction;
+                    p.temperature = ap.temperature;
+                    p.energy = ap.energy.total;
+                    p.best_energy = ap.best_energy;
+                    p.proposals = ap.proposals;
+                    p.commits = ap.commits;
+                    p.nodes = ap.nodes;
+                    p.struts = ap.struts;
+                });
         };
 
         PipelineResult result = run_pipeline(s.mesh, s.report.genus, po, callbacks);
         const size_t nodes = result.model.nodes.size(), struts = result.model.struts.size();
         set_model(std::move(result.model), "run");
-        control.update([&](RunProgress &p) {
-            p.seconds = clock.seconds();
-            p.nodes = nodes;
-            p.struts = struts;
-            if (result.anneal)
+        control.update(
+            [&](RunProgress &p)
             {
-                p.energy = result.model_energy.total;
-                p.commits = result.anneal->stats.commits;
-                p.proposals = result.anneal->stats.proposals;
-            }
-            p.fraction = 1.0;
-            p.valid = result.model_valid;
-            p.genus = result.model_genus;
-            p.surface_genus = result.surface_genus;
-            p.note = result.advice;
-            if (!result.model_valid)
-                p.note += (p.note.empty() ? "" : " ") + std::string("Model check: ") + result.validation;
-            p.state = control.cancel_requested() ? RunState::Cancelled : RunState::Done;
-        });
+                p.seconds = clock.seconds();
+                p.nodes = nodes;
+                p.struts = struts;
+                if (result.anneal)
+                {
+                    p.energy = result.model_energy.total;
+                    p.commits = result.anneal->stats.commits;
+                    p.proposals = result.anneal->stats.proposals;
+                }
+                p.fraction = 1.0;
+                p.valid = result.model_valid;
+                p.genus = result.model_genus;
+                p.surface_genus = result.surface_genus;
+                p.note = result.advice;
+                if (!result.model_valid)
+                    p.note += (p.note.empty() ? "" : " ") + std::string("Model check: ") + result.validation;
+                p.state = control.cancel_requested() ? RunState::Cancelled : RunState::Done;
+            });
     }
     catch (const std::exception &e)
     {
         const std::string what = e.what();
-        control.update([&](RunProgress &p) {
-            p.seconds = clock.seconds();
-            p.error = what;
-            p.state = RunState::Failed;
-        });
+        control.update(
+            [&](RunProgress &p)
+            {
+                p.seconds = clock.seconds();
+                p.error = what;
+                p.state = RunState::Failed;
+            });
     }
 }
 
 std::string Session::start(const std::string &options_json)
 {
-    return guarded([&] {
-        if (!surface_)
-            throw InvalidInputError("load a mesh first (this model came from a file or link; drop its mesh to run again)");
-        if (busy())
-            throw InvalidInputError("a run is in progress");
-        const RunOptions options = parse_run_options(options_json);
-        if (run_thread_.joinable())
-            run_thread_.join();
-        run_ = std::make_unique<RunControl>();
+    return guarded(
+        [&]
+        {
+            if (!surface_)
+                throw InvalidInputError(
+                    "load a mesh first (this model came from a file or link; drop its mesh to run again)");
+            if (busy())
+                throw InvalidInputError("a run is in progress");
+            const RunOptions options = parse_run_options(options_json);
+            if (run_thread_.joinable())
+                run_thread_.join();
+            run_ = std::make_unique<RunControl>();
 #if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-        execute_run(options, *run_);
+            execute_run(options, *run_);
 #else
-        // The worker's own thread must return to its event loop: it receives Cancel, and
-        // pthread_create from another thread is completed there.
-        run_->update([](RunProgress &p) { p.state = RunState::Initial; });
-        run_thread_ = std::thread([this, options] { execute_run(options, *run_); });
+            // The worker's own thread must return to its event loop: it receives Cancel, and
+            // pthread_create from another thread is completed there.
+            run_->update([](RunProgress &p) { p.state = RunState::Initial; });
+            run_thread_ = std::thread([this, options] { execute_run(options, *run_); });
 #endif
-        return nlohmann::json{{"ok", true}}.dump();
-    });
+            return nlohmann::json{{"ok", true}}.dump();
+        });
 }
 
 std::string Session::run_blocking(const std::string &options_json,
                                   const std::function<bool(const RunProgress &)> &report, double interval)
 {
-    return guarded([&] {
-        if (!surface_)
-            throw InvalidInputError("load a mesh first");
-        if (busy())
-            throw InvalidInputError("a run is in progress");
-        const RunOptions options = parse_run_options(options_json);
-        if (run_thread_.joinable())
-            run_thread_.join();
-        run_ = std::make_unique<RunControl>();
-        run_->set_reporter(report, interval);
-        execute_run(options, *run_);
-        report(run_->get());
-        return nlohmann::json{{"ok", true}}.dump();
-    });
+    return guarded(
+        [&]
+        {
+            if (!surface_)
+                throw InvalidInputError("load a mesh first");
+            if (busy())
+                throw InvalidInputError("a run is in progress");
+            const RunOptions options = parse_run_options(options_json);
+            if (run_thread_.joinable())
+                run_thread_.join();
+            run_ = std::make_unique<RunControl>();
+            run_->set_reporter(report, interval);
+            execute_run(options, *run_);
+            report(run_->get());
+            return nlohmann::json{{"ok", true}}.dump();
+        });
 }
 
 void Session::cancel()
@@ -369,12 +393,14 @@ RunProgress Session::progress() const
 
 std::string Session::parts() const
 {
-    return guarded([&] {
-        const ZomeModel m = model();
-        if (m.nodes.empty())
-            throw InvalidInputError("no model yet");
-        return parts_report_json(parts_list(m), {});
-    });
+    return guarded(
+        [&]
+        {
+            const ZomeModel m = model();
+            if (m.nodes.empty())
+                throw InvalidInputError("no model yet");
+            return parts_report_json(parts_list(m), {});
+        });
 }
 
 std::string Session::export_model(const std::string &file_name) const
@@ -394,56 +420,60 @@ std::string Session::export_model(const std::string &file_name) const
 
 std::string Session::link() const
 {
-    return guarded([&] {
-        const ZomeModel m = model();
-        if (m.nodes.empty())
-            throw InvalidInputError("no model yet");
-        return nlohmann::json{{"ok", true}, {"link", encode_share_link(m)}}.dump();
-    });
+    return guarded(
+        [&]
+        {
+            const ZomeModel m = model();
+            if (m.nodes.empty())
+                throw InvalidInputError("no model yet");
+            return nlohmann::json{{"ok", true}, {"link", encode_share_link(m)}}.dump();
+        });
 }
 
 std::string Session::summary() const
 {
-    return guarded([&] {
-        ZomeModel m;
-        std::string source;
+    return guarded(
+        [&]
         {
-            std::lock_guard lock(model_mutex_);
-            m = model_;
-            source = model_source_;
-        }
-        nlohmann::json out;
-        out["ok"] = true;
-        out["source"] = source;
-        out["balls"] = m.nodes.size();
-        out["struts"] = m.struts.size();
-        out["faces"] = m.faces.size();
-        nlohmann::json by_kind = nlohmann::json::object();
-        for (const auto &s : m.struts)
-        {
-            const int id = vector_id_of(m.nodes[s[1]] - m.nodes[s[0]]);
-            if (id >= 0)
-                by_kind[std::string(kind_info(vector_kind(id)).name)] =
-                    by_kind.value(std::string(kind_info(vector_kind(id)).name), 0) + 1;
-        }
-        out["by_kind"] = by_kind;
-        if (!m.faces.empty())
-        {
-            const ValidationReport check = validate(from_model(m));
-            out["valid"] = check.ok();
-            out["genus"] = check.genus;
-            out["validation"] = check.message();
-        }
-        else
-        {
-            out["valid"] = nullptr;
-        }
-        out["stats"] = nlohmann::json::parse(m.stats_json, nullptr, false);
-        if (out["stats"].is_discarded())
-            out["stats"] = nlohmann::json::object();
-        out["surface"] = surface_ ? surface_name_ : "";
-        return out.dump();
-    });
+            ZomeModel m;
+            std::string source;
+            {
+                std::lock_guard lock(model_mutex_);
+                m = model_;
+                source = model_source_;
+            }
+            nlohmann::json out;
+            out["ok"] = true;
+            out["source"] = source;
+            out["balls"] = m.nodes.size();
+            out["struts"] = m.struts.size();
+            out["faces"] = m.faces.size();
+            nlohmann::json by_kind = nlohmann::json::object();
+            for (const auto &s : m.struts)
+            {
+                const int id = vector_id_of(m.nodes[s[1]] - m.nodes[s[0]]);
+                if (id >= 0)
+                    by_kind[std::string(kind_info(vector_kind(id)).name)] =
+                        by_kind.value(std::string(kind_info(vector_kind(id)).name), 0) + 1;
+            }
+            out["by_kind"] = by_kind;
+            if (!m.faces.empty())
+            {
+                const ValidationReport check = validate(from_model(m));
+                out["valid"] = check.ok();
+                out["genus"] = check.genus;
+                out["validation"] = check.message();
+            }
+            else
+            {
+                out["valid"] = nullptr;
+            }
+            out["stats"] = nlohmann::json::parse(m.stats_json, nullptr, false);
+            if (out["stats"].is_discarded())
+                out["stats"] = nlohmann::json::object();
+            out["surface"] = surface_ ? surface_name_ : "";
+            return out.dump();
+        });
 }
 
 } // namespace zomeify::web

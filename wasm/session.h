@@ -25,7 +25,7 @@ struct LoadedSurface;
 
 class Session
 {
-  public:
+public:
     Session();
     ~Session();
     Session(const Session &) = delete;
@@ -72,7 +72,7 @@ class Session
     //! {balls, struts, faces, by_kind{...}, genus?, valid, source, stats{}}.
     std::string summary() const;
 
-  private:
+private:
     void execute_run(const RunOptions &options, RunControl &control);
     void set_model(ZomeModel model, std::string source);
     bool busy() const;
