@@ -254,6 +254,18 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
         held = 0;
         lower_upper(std::sqrt(best));
     };
+    // A node is two cache lines, a block three.
+    auto prefetch_child = [&](uint32_t child) {
+        const char* address = WideBvhNode::is_leaf(child)
+                                   ? reinterpret_cast<const char*>(blocks + WideBvhNode::leaf_index(child))
+                                   : reinterpret_cast<const char*>(nodes + child);
+        prefetch(address);
+        prefetch(address + 64);
+        if (WideBvhNode::is_leaf(child))
+        {
+            prefetch(address + 128);
+        }
+    };
     // Estimates a leaf's triangles; keeps those in the window as candidates (without branches).
     auto visit_leaf = [&](uint32_t child) {
         const uint32_t leaf = WideBvhNode::leaf_index(child);
@@ -270,6 +282,16 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
         {
             lowest_estimate = lowest;
             lower_upper(std::sqrt(static_cast<double>(lowest)) + slack);
+            // The new best will most likely be measured: fetch its corners now.
+            for (uint32_t lane = 0; lane < lanes; ++lane)
+            {
+                if (estimate[lane] == lowest)
+                {
+                    const char* slot = reinterpret_cast<const char*>(&slots_[4 * leaf + lane]);
+                    prefetch(slot);
+                    prefetch(slot + sizeof(SlotTriangle) - 1);
+                }
+            }
         }
         if (held > kCandidates - 4)
         {
@@ -287,11 +309,16 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
         const simd::F4 d = dx * dx + dy * dy + dz * dz;
         const simd::I4 keep = d <= simd::splat(node_window);
         // Children in the window, nearest first, by a sorting network on (distance, child) keys;
-        // empty children have infinite box distances and are never kept.
+        // empty children have infinite box distances and are never kept. Their data is
+        // requested first, so that the misses of several children overlap.
         uint64_t key[4];
         int count = 0;
         for (int j = 0; j < 4; ++j)
         {
+            if (keep[j] != 0)
+            {
+                prefetch_child(node.child[j]);
+            }
             key[j] = keep[j] != 0 ? child_key(d[j], node.child[j]) : ~uint64_t{0};
             count += keep[j] != 0 ? 1 : 0;
         }
@@ -323,8 +350,6 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
             }
             if (next != WideBvhNode::kEmpty)
             {
-                prefetch(nodes + next);
-                prefetch(reinterpret_cast<const char*>(nodes + next) + 64);
                 stack[top++] = {next, next_distance_squared};
             }
             next = child;
