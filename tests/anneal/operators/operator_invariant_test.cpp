@@ -3,8 +3,9 @@
 // (release), validate(): closed 2-manifold, genus unchanged, tri/quad faces, Zome struts, unique
 // positions, no slot conflicts, valence ≥ 3. The number of applications is ZOME_INVARIANT_OPS
 // (default 10^6 natively; 10^5 under a sanitizer or in wasm, where everything is many times
-// slower), shared equally among the fixtures. Prints proposals, acceptances and rejection
-// reasons per kind.
+// slower), shared equally among the fixtures; ZOME_VALIDATE_EVERY overrides the validation
+// period (ZOME_VALIDATE_EVERY=1 checks after every commit in a release build too). Prints
+// proposals, acceptances and rejection reasons per kind.
 #include <array>
 #include <cstdio>
 #include <string>
@@ -71,6 +72,7 @@ TEST(OperatorInvariants, RandomApplicationsKeepEveryInvariant)
     models.push_back({"icosahedron", fixtures::icosahedron(), 0, true});
     const long total = test::env_count("ZOME_INVARIANT_OPS", kDefaultOps);
     const long per_model = std::max(1L, total / static_cast<long>(models.size()));
+    const long validate_every = std::max(1L, test::env_count("ZOME_VALIDATE_EVERY", kValidateEvery));
     std::array<KindStats, kOperatorKinds> stats{};
     Proposal p;
     for (const fixtures::NamedModel &named : models)
@@ -95,7 +97,7 @@ TEST(OperatorInvariants, RandomApplicationsKeepEveryInvariant)
             apply_proposal(mesh, p);
             ++s.applied;
             ++applied;
-            if (applied % kValidateEvery == 0 || applied == per_model)
+            if (applied % validate_every == 0 || applied == per_model)
             {
                 const ValidationReport report = validate(mesh);
                 ASSERT_TRUE(report.ok()) << "after " << applied << " applications, last " << operator_name(kind) << ": "

@@ -40,7 +40,7 @@ SharedScene shared_scene(const std::string &mesh_name, int resolution);
 //! (orientation kept): equal for meshes with the same faces regardless of handles.
 std::vector<std::vector<ZVec>> face_set(const ZomeMesh &mesh);
 
-//! ZOME_INVARIANT_OPS if set, else `fallback`.
+//! The environment variable `name` as a number if set, else `fallback`.
 long env_count(const char *name, long fallback);
 
 } // namespace zomeify::test
