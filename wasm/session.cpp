@@ -296,6 +296,8 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
         };
 
         PipelineResult result = run_pipeline(s.mesh, s.report.genus, po, callbacks);
+        // The same statistics the CLI writes (its .zome.json carries them too).
+        result.model.stats_json = pipeline_stats_json(result, -1);
         const size_t nodes = result.model.nodes.size(), struts = result.model.struts.size();
         set_model(std::move(result.model), "run");
         control.update(

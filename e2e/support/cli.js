@@ -22,7 +22,7 @@ export function cliHasProposals() {
 
 /**
  * Runs `zomeify run MESH` with the page's deterministic options and returns the counts.
- * @returns {{balls: number, struts: number, faces: number, options: object}}
+ * @returns {{balls: number, struts: number, faces: number, options: object, stats: object}}
  */
 export function goldenRun(mesh, { resolution, proposals, seed }) {
   fs.mkdirSync(OUT, { recursive: true });
@@ -34,7 +34,8 @@ export function goldenRun(mesh, { resolution, proposals, seed }) {
   cli(args);
   const model = JSON.parse(fs.readFileSync(out, 'utf8'));
   const options = { resolution, threads: 1, seed, proposals: annealing ? proposals : 0, initial_only: !annealing };
-  return { balls: model.nodes.length, struts: model.struts.length, faces: (model.faces || []).length, options };
+  return { balls: model.nodes.length, struts: model.struts.length, faces: (model.faces || []).length, options,
+    stats: model.stats || {} };
 }
 
 /** `zomeify parts FILE --json` of a downloaded model. */
