@@ -69,11 +69,14 @@ TEST(OperatorEnergy, IncrementalDeltaEqualsFullRecomputationForEveryKind)
         EXPECT_GE(checked[static_cast<size_t>(k)], kMinPerKind) << operator_name(static_cast<OperatorKind>(k));
 }
 
-TEST(OperatorEnergy, ProposalRatePerKind)
+// A quick figure, printed and not asserted: propose() + simulate + delta_energy per kind on Z0
+// of the torus after 2000 random applications (a mix of triangles, quads and valences), with a
+// projection cache of `cache_capacity` entries.
+void print_rates(size_t cache_capacity)
 {
-    // A quick figure, printed and not asserted: propose() + simulate + delta_energy per kind on
-    // Z0 of the torus after 2000 random applications (a mix of triangles, quads and valences).
-    const test::SharedScene scene = test::shared_scene("torus.obj", 12);
+    ProjectionCacheOptions cache;
+    cache.capacity = cache_capacity;
+    const test::SharedScene scene = test::shared_scene("torus.obj", 12, cache);
     ZomeMesh mesh = from_model(scene.z0);
     Rng rng(5);
     Proposal p;
@@ -93,7 +96,9 @@ TEST(OperatorEnergy, ProposalRatePerKind)
     // Pass 0 warms the projection cache (the same proposals come back: every pass of a kind
     // uses the same random stream); pass 1 times propose() alone, pass 2 with ΔE.
     std::array<double, kOperatorKinds> propose_rate{};
-    std::printf("[ rate     ] %zu nodes; per kind: proposals/s without and with ΔE (valid share)\n", mesh.n_vertices());
+    std::printf("[ rate     ] %zu nodes, projection cache of %zu; per kind: proposals/s without and with ΔE "
+                "(valid share)\n",
+                mesh.n_vertices(), cache_capacity);
     for (int pass = 0; pass < 3; ++pass)
     {
         for (int k = 0; k < kOperatorKinds; ++k)
@@ -124,6 +129,12 @@ TEST(OperatorEnergy, ProposalRatePerKind)
                             kProposals / s, 100.0 * valid / kProposals, sink == 12345.0 ? " " : "");
         }
     }
+}
+
+TEST(OperatorEnergy, ProposalRatePerKind)
+{
+    print_rates(ProjectionCacheOptions().capacity); // the default
+    print_rates(size_t{1} << 22);                   // every sample of the measurement fits
 }
 
 } // namespace

@@ -53,7 +53,7 @@ ZomeModel rhombic_cell()
     return fixtures::voxel_surface(fixtures::block_cells(1, 1, 1), fixtures::rhombohedral_basis());
 }
 
-SharedScene shared_scene(const std::string &mesh_name, int resolution)
+SharedScene shared_scene(const std::string &mesh_name, int resolution, const ProjectionCacheOptions &cache)
 {
     SharedScene s;
     s.projector = std::make_unique<SurfaceProjector>(load_surface(shared_path("data/meshes/" + mesh_name)));
@@ -65,7 +65,7 @@ SharedScene shared_scene(const std::string &mesh_name, int resolution)
     if (!z0.report.valid)
         throw std::runtime_error("no manifold Z0 for " + mesh_name);
     s.z0 = std::move(z0.model);
-    s.context = std::make_unique<SurfaceContext>(*s.projector, s.z0.transform);
+    s.context = std::make_unique<SurfaceContext>(*s.projector, s.z0.transform, cache);
     return s;
 }
 

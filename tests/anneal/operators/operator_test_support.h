@@ -34,7 +34,7 @@ struct SharedScene
     std::unique_ptr<SurfaceProjector> projector;
     std::unique_ptr<SurfaceContext> context;
 };
-SharedScene shared_scene(const std::string &mesh_name, int resolution);
+SharedScene shared_scene(const std::string &mesh_name, int resolution, const ProjectionCacheOptions &cache = {});
 
 //! The sorted list of faces, each as its corner positions rotated to start at the smallest
 //! (orientation kept): equal for meshes with the same faces regardless of handles.
