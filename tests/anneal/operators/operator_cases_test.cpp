@@ -7,6 +7,7 @@
 #include "core/anneal/operators/operators.h"
 #include "core/mesh/circulators.h"
 #include "core/mesh/model_convert.h"
+#include "core/mesh/star.h"
 #include "core/mesh/validate.h"
 #include "tests/anneal/operators/operator_test_support.h"
 #include "tests/support/zome_fixtures.h"
@@ -300,6 +301,57 @@ TEST(Operators, MovNodeOnACubeShellStaysValid)
         ++applied;
     }
     EXPECT_GT(applied, 0);
+}
+
+TEST(Operators, LinksThatVisitANodeTwiceAreRefused)
+{
+    // On meshes shaped by random applications (which produce quads whose far corner is also a
+    // neighbour), REMNODE says LinkTwice exactly when star.h's vertex link is not a simple loop,
+    // and SPLITSTRUT exactly when the strut's link is not.
+    ZomeMesh mesh = from_model(fixtures::double_torus_shell());
+    Rng rng(77);
+    Proposal p;
+    std::vector<Vertex> link;
+    int twice_nodes = 0, twice_struts = 0;
+    for (int round = 0; round < 40; ++round)
+    {
+        for (int applied = 0; applied < 50;)
+        {
+            const auto kind = static_cast<OperatorKind>(rng.below(kOperatorKinds));
+            if (test::propose_at(kind, mesh, test::random_node(mesh, rng), rng, p))
+            {
+                apply_proposal(mesh, p);
+                ++applied;
+            }
+        }
+        for (MeshIndex i = 0; i < mesh.vertices_size(); ++i)
+        {
+            const Vertex v(i);
+            if (!mesh.is_valid(v))
+                continue;
+            ASSERT_TRUE(vertex_link(mesh, v, link));
+            const bool simple = is_simple_loop(link);
+            test::propose_at(OperatorKind::RemNode, mesh, v, rng, p);
+            EXPECT_EQ(p.rejection == Rejection::LinkTwice, !simple);
+            twice_nodes += simple ? 0 : 1;
+        }
+        for (MeshIndex e = 0; e < mesh.edges_size(); ++e)
+        {
+            if (!mesh.is_valid(Edge(e)))
+                continue;
+            ASSERT_TRUE(edge_link(mesh, Edge(e), link));
+            const bool simple = is_simple_loop(link);
+            const Outcome out = run(
+                mesh,
+                [&](Claims &c, Fill &fill, LocalChange &ch)
+                { return detail::split_strut_at(mesh, ZomeMesh::halfedge(Edge(e), 0), ZVec{}, c, fill, ch); },
+                /*apply=*/false);
+            EXPECT_EQ(out.rejection == Rejection::LinkTwice, !simple);
+            twice_struts += simple ? 0 : 1;
+        }
+    }
+    EXPECT_GT(twice_nodes, 0);
+    EXPECT_GT(twice_struts, 0);
 }
 
 } // namespace
