@@ -173,6 +173,15 @@ def markdown(doc):
         ratio = w.get("wall_s") / n["wall_s"] if n.get("wall_s") and w.get("wall_s") else None
         lines.append("| %s | %s | %s | %s | %s | %s |" % (bench, cell(n, "wall_s"), cell(n, "max_rss_mib"),
                                                           cell(w, "wall_s"), cell(w, "max_rss_mib"), fmt(ratio)))
+    for r in doc["runs"]:
+        if r["platform"] == "browser":
+            metrics = {}
+            for result in r["results"]:
+                flatten(result, "", metrics)
+            lines += ["", "## Browser (Chromium worker, Playwright; exit status %d)" % r["exit_status"], "",
+                      "| metric | value |", "|---|---|"]
+            lines += ["| %s | %s |" % (k, fmt(v)) for k, v in metrics.items()
+                      if re.search(r"per_second|proposals|commits|seconds", k)]
     for title, rows in (("Headline figures", [r for r in doc["comparisons"]
                                                 if any(re.search(h, r["metric"]) for h in HEADLINE)]),
                         ("All figures", doc["comparisons"])):

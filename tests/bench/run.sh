@@ -3,7 +3,8 @@
 #   tests/bench/run.sh [--quick] [--native-only]
 # Writes build/bench/results.json (every result, the machine, wall time and peak memory of each run),
 # build/bench/results.md (the table, with wasm/native ratios) and build/bench/time_to_quality.svg
-# (energy against wall time from bench_anneal). --quick gives the benchmarks smaller workloads so the
+# (energy against wall time from bench_quality); with Playwright installed (npm ci) also the proposals/s
+# inside Chromium's worker (browser.spec.mjs). --quick gives the benchmarks smaller workloads so the
 # whole command takes a few minutes; the README's figures come from the full run.
 # Builds the benchmark targets first (build/native, build/wasm; BENCH_NATIVE_DIR / BENCH_WASM_DIR override).
 set -euo pipefail
@@ -73,6 +74,19 @@ for bench in "${benches[@]}"; do
     fi
   done < <(invocations "$bench")
 done
+
+# Proposals/s inside Chromium's worker (Playwright, the page's threaded build), when Playwright is
+# installed (npm ci) and not --native-only; BENCH_SKIP_BROWSER=1 skips it.
+if [ $wasm = 1 ] && [ -d node_modules/@playwright/test ] && [ "${BENCH_SKIP_BROWSER:-0}" != 1 ]; then
+  echo "bench: browser (Chromium, Playwright)" >&2
+  rm -f "$out/browser.json"; rc=0
+  seconds=5; [ $quick = 0 ] || seconds=2
+  { bash web/build.sh >/dev/null &&
+    BENCH_BROWSER_SECONDS=$seconds npx playwright test -c tests/bench/browser.config.mjs >"$out/browser.log" 2>&1; } || rc=$?
+  if [ ! -s "$out/browser.json" ] && [ $rc -eq 0 ]; then rc=1; fi
+  touch "$out/browser.json"; : > "$out/browser.time"
+  python3 tests/bench/collect.py record browser bench_anneal_browser "" "$rc" "$out/browser.json" "$out/browser.time" >>"$jsonl"
+fi
 
 mode=full; [ $quick = 0 ] || mode=quick
 python3 tests/bench/collect.py report "$jsonl" "$out/results.json" "$out/results.md" "$mode"
