@@ -16,7 +16,10 @@ bool propose(OperatorKind kind, const ZomeMesh &mesh, Vertex seed, Rng &rng, Cla
     thread_local Fill fill;
     fill.clear();
     Rejection r = Rejection::NoCandidate;
-    if (mesh.is_valid(seed) && claims.holds(seed))
+    // is_deleted, not is_valid: is_valid reads the vertex count, which a committing thread may be
+    // incrementing (a data race under ThreadSanitizer); the engine draws seeds below the count it
+    // published, and a claimed node's deletion flag cannot change under us.
+    if (claims.holds(seed) && !mesh.is_deleted(seed))
     {
         switch (kind)
         {
