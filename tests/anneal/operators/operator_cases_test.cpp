@@ -303,6 +303,20 @@ TEST(Operators, MovNodeOnACubeShellStaysValid)
     EXPECT_GT(applied, 0);
 }
 
+TEST(Operators, RemNodeRefusesALinkNoZomeChordsCanFill)
+{
+    // A corner of a B1 cube: its link is a hexagon (three squares) whose chords are all square
+    // diagonals or (±φ, ±φ, ±φ)-like vectors, none of them Zome vectors.
+    ZomeMesh mesh = from_model(fixtures::cube_shell(1));
+    for (uint64_t seed = 0; seed < 8; ++seed)
+    {
+        Rng rng(seed);
+        Proposal p;
+        EXPECT_FALSE(test::propose_at(OperatorKind::RemNode, mesh, Vertex(static_cast<MeshIndex>(seed)), rng, p));
+        EXPECT_EQ(p.rejection, Rejection::NoCandidate);
+    }
+}
+
 TEST(Operators, LinksThatVisitANodeTwiceAreRefused)
 {
     // On meshes shaped by random applications (which produce quads whose far corner is also a
