@@ -317,6 +317,52 @@ TEST(Operators, RemNodeRefusesALinkNoZomeChordsCanFill)
     }
 }
 
+TEST(Operators, ProposalsClaimEverythingTheEnergyReads)
+{
+    // The claiming rule of proposal.h: every node of the removed region, every surviving end of a
+    // removed or added strut, and every neighbour of those ends (E_fair reads their positions).
+    ZomeMesh mesh = from_model(fixtures::double_torus_shell());
+    Rng rng(2026);
+    Proposal p;
+    int checked = 0;
+    for (int step = 0; step < 20000; ++step)
+    {
+        auto kind = static_cast<OperatorKind>(rng.below(kOperatorKinds));
+        if (mesh.n_vertices() > 100 && (kind == OperatorKind::InsNode || kind == OperatorKind::SplitStrut))
+            kind = OperatorKind::RemNode; // keep the model small
+        Claims claims;
+        const Vertex seed = test::random_node(mesh, rng);
+        claims.take(seed);
+        if (!propose(kind, mesh, seed, rng, claims, p))
+            continue;
+        const LocalChange &c = p.change;
+        std::vector<Vertex> ends;
+        for (Face f : c.removed_faces())
+            for (Vertex v : face_vertices(mesh, f))
+                EXPECT_TRUE(claims.holds(v)) << operator_name(kind);
+        for (Vertex v : c.removed_nodes())
+            EXPECT_TRUE(claims.holds(v)) << operator_name(kind);
+        for (Edge e : c.removed_struts())
+            for (int i = 0; i < 2; ++i)
+                ends.push_back(mesh.vertex(e, i));
+        for (const NewStrut &s : c.added_struts())
+            for (const ZVec &q : {s.a, s.b})
+                if (const Vertex v = mesh.find_vertex(q); v.is_valid())
+                    ends.push_back(v);
+        for (Vertex v : ends)
+        {
+            if (std::find(c.removed_nodes().begin(), c.removed_nodes().end(), v) != c.removed_nodes().end())
+                continue;
+            EXPECT_TRUE(claims.holds(v)) << operator_name(kind);
+            for (Vertex w : adjacent_vertices(mesh, v))
+                EXPECT_TRUE(claims.holds(w)) << operator_name(kind) << ": neighbour of a changed node";
+        }
+        apply_proposal(mesh, p);
+        ++checked;
+    }
+    EXPECT_GT(checked, 1000);
+}
+
 TEST(Operators, LinksThatVisitANodeTwiceAreRefused)
 {
     // On meshes shaped by random applications (which produce quads whose far corner is also a
