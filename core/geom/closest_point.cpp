@@ -63,14 +63,14 @@ constexpr int kCandidates = 32;
 // distance +inf) are never kept.
 float squared_rounded_up(double r)
 {
-    const double x = r * r;
+    // Rounding to nearest float is off by at most 2^-24 relative; scaling up by more first makes
+    // the result an upper bound without a libm call.
+    const double x = r * r * (1.0 + 1.2e-7);
     if (!(x < static_cast<double>(std::numeric_limits<float>::max())))
     {
         return std::numeric_limits<float>::max();
     }
-    // Rounding to nearest float is off by at most 2^-24 relative; scaling up by more first makes
-    // the result an upper bound without a libm call.
-    return static_cast<float>(x * (1.0 + 1.2e-7));
+    return static_cast<float>(x);
 }
 
 // Sort key of a kept child: float bits of a non-negative distance order like the distances.
@@ -141,13 +141,18 @@ SurfaceProjector::SurfaceProjector(TriangleMesh mesh, const BvhOptions& options)
         n = len > 0.0 ? Vec3(n / len) : Vec3::Zero();
     }
     half_extent_ = 0.5 * bvh_.bounds().extent().maxCoeff();
-    blocks_.reserve(wide_.leaves().size());
+    // Outside the float range every query takes search_all(), which needs the slots only.
+    const bool float_range = half_extent_ >= kFloatRangeMin && half_extent_ <= kFloatRangeMax;
+    blocks_.reserve(float_range ? wide_.leaves().size() : 0);
     slots_.reserve(4 * wide_.leaves().size());
     const double sliver_width = TriangleBlockTolerance::kSliverWidth * half_extent_;
     for (const WideBvhLeaf& leaf : wide_.leaves())
     {
         const uint32_t* ids = bvh_.order().data() + leaf.first;
-        blocks_.push_back(make_triangle_block(mesh_, ids, leaf.count, bvh_.origin(), sliver_width));
+        if (float_range)
+        {
+            blocks_.push_back(make_triangle_block(mesh_, ids, leaf.count, bvh_.origin(), sliver_width));
+        }
         for (uint32_t lane = 0; lane < 4; ++lane)
         {
             const uint32_t id = ids[lane < leaf.count ? lane : 0];
@@ -257,8 +262,8 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
     // A node is two cache lines, a block three.
     auto prefetch_child = [&](uint32_t child) {
         const char* address = WideBvhNode::is_leaf(child)
-                                   ? reinterpret_cast<const char*>(blocks + WideBvhNode::leaf_index(child))
-                                   : reinterpret_cast<const char*>(nodes + child);
+                                  ? reinterpret_cast<const char*>(blocks + WideBvhNode::leaf_index(child))
+                                  : reinterpret_cast<const char*>(nodes + child);
         prefetch(address);
         prefetch(address + 64);
         if (WideBvhNode::is_leaf(child))

@@ -40,8 +40,7 @@ TEST(GeomProjection, MatchesBruteForceOnProceduralSurfaces)
         for (int i = 0; i < 500; ++i)
         {
             check_against_brute_force(projector, test::random_point_in_box(mesh, 0.3, rng), diagonal);
-            check_against_brute_force(projector, test::random_point_near_surface(mesh, 0.05 * diagonal, rng),
-                                      diagonal);
+            check_against_brute_force(projector, test::random_point_near_surface(mesh, 0.05 * diagonal, rng), diagonal);
         }
         // Far away and exactly on vertices.
         check_against_brute_force(projector, Vec3(1e3, -2e3, 5e2), diagonal);
@@ -69,6 +68,35 @@ TEST(GeomProjection, HintGivesTheSameDistance)
     }
     EXPECT_EQ(projector.project(Vec3(3, 0, 0), 0xffffffffu).distance_squared,
               projector.project(Vec3(3, 0, 0)).distance_squared);
+}
+
+TEST(GeomProjection, ExtremeScalesAndFarQueriesMatchBruteForce)
+{
+    // Tiny and huge meshes and queries far outside float range take the exact scan of all
+    // triangles; a mesh away from the coordinate origin is searched relative to its box.
+    std::mt19937 rng(17);
+    const TriangleMesh unit = test::make_torus(1.0, 0.3, 24, 12);
+    for (const double scale : {1e-20, 1.0, 1e20})
+    {
+        for (const double shift : {0.0, 100.0})
+        {
+            TriangleMesh mesh = unit;
+            for (Vec3& v : mesh.positions)
+            {
+                v = scale * v + Vec3(shift * scale, -shift * scale, 0.5 * shift * scale);
+            }
+            SCOPED_TRACE(testing::Message() << "scale " << scale << ", shift " << shift);
+            const SurfaceProjector projector(mesh);
+            const double diagonal = test::bbox_diagonal(mesh);
+            for (int i = 0; i < 100; ++i)
+            {
+                check_against_brute_force(projector, test::random_point_near_surface(mesh, 0.05 * diagonal, rng),
+                                          diagonal);
+            }
+            const Vec3 centre = mesh.positions[0];
+            check_against_brute_force(projector, centre + Vec3(1e17, -3e16, 2e16) * diagonal, diagonal);
+        }
+    }
 }
 
 TEST(GeomProjection, NormalsAreUnitAndOutwardOnAnalyticShapes)
