@@ -106,6 +106,11 @@ ZomeModel read_zome_json(std::string_view text)
     {
         fail("JSON syntax error at byte " + std::to_string(e.byte) + (text.empty() ? " (the file is empty)" : ""));
     }
+    catch (const json::out_of_range&)
+    {
+        // nlohmann throws this while parsing a number beyond double's range, e.g. 1e3000.
+        fail("a number is too large");
+    }
     if (!doc.is_object())
         fail("the top level is not an object");
     const json& format = member(doc, "format");

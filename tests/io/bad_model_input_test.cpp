@@ -133,3 +133,13 @@ TEST(BadModelInput, TruncatedAndMutatedFilesNeverCrash)
         EXPECT_THROW(read_model_buffer(junk, "r.zome.json"), InvalidInputError);
     }
 }
+
+// Found by fuzzing (tests/fuzz, target zome_json): a number beyond double's range made the JSON
+// parser throw its own out_of_range exception instead of a one-line InvalidInputError.
+TEST(BadModelInput, JsonNumberOutOfRange)
+{
+    const std::string doc = R"({"format":"zomeify-model","version":1,"nodes":[[1e3000,0,0,0,0,0]],"struts":[]})";
+    EXPECT_NE(error_of(doc, "m.zome.json").find("too large"), std::string::npos);
+    EXPECT_NE(error_of(R"({"format":"zomeify-model","version":-1e999})", "m.zome.json").find("too large"),
+              std::string::npos);
+}
