@@ -326,7 +326,7 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
                 const double limit =
                     static_cast<double>(reader.remaining_bytes()) / (reader.is_ascii() ? 1 : prop.type.size);
                 if (!(n >= 0) || n > limit)
-                    throw InvalidInputError(what + ": list length " + std::to_string(static_cast<long long>(n)) +
+                    throw InvalidInputError(what + ": list length " + number_text(n) +
                                             " does not fit in the file");
                 const bool keep = is_face && static_cast<int>(k) == index_property;
                 if (keep)

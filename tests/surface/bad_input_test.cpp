@@ -273,5 +273,16 @@ TEST(SurfaceBadInput, GltfAccessorOutsideBuffer)
     EXPECT_FALSE(read_error(gltf, "m.gltf").empty());
 }
 
+
+// Found by fuzzing (tests/fuzz, target ply): a list length beyond long long's range was converted to
+// long long for the message, which is undefined behaviour (UBSan stopped on it).
+TEST(SurfaceBadInput, PlyListLengthBeyondInteger)
+{
+    const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                            "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                            "0 0 0\n1 0 0\n0 1 0\n5.6e20 0 1 2\n";
+    EXPECT_CONTAINS(read_error(ply, "m.ply"), "list length");
+}
+
 } // namespace
 } // namespace zomeify::surface_test
