@@ -4,6 +4,7 @@
 import { Event } from './protocol.js';
 import { SAMPLES, DEFAULT_SAMPLE, sampleUrl, fetchBytes } from './samples.js';
 import { pageUrlWith, copyText } from './share_link.js';
+import { modelBaseName, fileNameFromUrl } from './file_names.js';
 
 export class App {
   constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl }) {
@@ -46,7 +47,7 @@ export class App {
       return { ok: false, error: this.lastError };
     }
     this.lastError = null;
-    this.currentName = name.replace(/\.(zome\.json|json|vef|obj|stl|ply|off|gltf|glb)$/i, '') || 'model';
+    this.currentName = modelBaseName(name);
     if (result.kind === 'mesh') {
       this.fitNext = fit; // the first model of a new shape is framed
       const r = result.report;
@@ -68,7 +69,7 @@ export class App {
   }
 
   async loadUrl(url, options) {
-    const name = decodeURIComponent(new URL(url, document.baseURI).pathname.split('/').pop() || 'mesh');
+    const name = fileNameFromUrl(url, document.baseURI);
     let bytes;
     try {
       bytes = await fetchBytes(url);

@@ -23,11 +23,13 @@ export class CoreBridge {
   }
 
   on(type, callback) {
+    if (!this.listeners[type]) throw new Error(`unknown event '${type}'`);
     this.listeners[type].push(callback);
   }
 
   emit(type, data) {
-    for (const callback of this.listeners[type]) callback(data);
+    // A message of an unknown type is dropped, not thrown inside onmessage (where nobody catches it).
+    for (const callback of this.listeners[type] || []) callback(data);
   }
 
   receive(data) {

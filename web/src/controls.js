@@ -1,8 +1,32 @@
 // The run controls: resolution with a live estimate (and the advisor's warning), time presets,
 // target complexity, threads, advanced weights and seed. Reads them as protocol RunOptions.
-const PRESETS = { quick: 5, standard: 30, thorough: 120 };
+export const PRESETS = { quick: 5, standard: 30, thorough: 120 };
 const DEFAULTS = { resolution: 12, preset: 'quick', seconds: 5, target_nodes: 0, threads: 0, seed: 1,
   weights: { dist: 10, orient: 100, fair: 5, complex: 1 } };
+
+// The controls' arithmetic and text, kept pure (no DOM) so web/tests/ can check it.
+
+/** The preset whose time is `seconds`, else 'custom'. */
+export function presetForSeconds(seconds) {
+  return Object.keys(PRESETS).find((k) => PRESETS[k] === seconds) || 'custom';
+}
+
+/** "auto" threads: all cores but one, at least 1, at most maxThreads. */
+export function autoThreadCount(cores, maxThreads) {
+  return Math.max(1, Math.min((cores || 2) - 1, maxThreads));
+}
+
+/** The estimate line: Z0's counts, and the final model's (target balls, 2.2–2.9 struts per ball). */
+export function estimateText(e, target) {
+  return `Z0: ${e.nodes} balls, ${e.struts} struts · final ≈ ${target} balls, ` +
+    `${Math.round(2.2 * target)}–${Math.round(2.9 * target)} struts`;
+}
+
+/** The advisor's warning ('' when Z0 keeps the surface's genus). */
+export function adviceText(e, resolution) {
+  return e.kept ? '' : (e.advice || `at ${resolution} cells the model's genus is ${e.genus}, ` +
+    `the surface's ${e.surface_genus}`);
+}
 
 export class Controls {
   /** @param {HTMLElement} root @param {{estimate: (r:number)=>Promise<object>}} deps */
@@ -32,7 +56,7 @@ export class Controls {
 
   /** All cores but one: the page, the compositor and (without a GPU) the rasteriser need one. */
   autoThreads() {
-    return Math.max(1, Math.min((navigator.hardwareConcurrency || 2) - 1, this.maxThreads));
+    return autoThreadCount(navigator.hardwareConcurrency, this.maxThreads);
   }
 
   presetChanged() {
@@ -54,7 +78,7 @@ export class Controls {
       this.presetChanged();
     }
     if (o.seconds !== undefined && o.preset === undefined) {
-      const preset = Object.keys(PRESETS).find((k) => PRESETS[k] === o.seconds) || 'custom';
+      const preset = presetForSeconds(o.seconds);
       this.el('preset').value = preset;
       this.presetChanged();
       this.el('seconds').value = o.seconds;
@@ -105,16 +129,19 @@ export class Controls {
     let e;
     try {
       e = await this.estimateFn(resolution);
-    } catch (err) {
-      if (serial === this.estimateSerial) out.textContent = /no mesh/.test(err.message) ? '' : '';
+    } catch {
+      // No estimate (e.g. no mesh loaded): clear the line and the last mesh's warning with it.
+      if (serial === this.estimateSerial) {
+        out.textContent = '';
+        warn.textContent = '';
+        warn.hidden = true;
+      }
       return;
     }
     if (serial !== this.estimateSerial) return;
     const target = Number(this.el('target').value) || e.nodes;
-    out.textContent = `Z0: ${e.nodes} balls, ${e.struts} struts · final ≈ ${target} balls, ` +
-      `${Math.round(2.2 * target)}–${Math.round(2.9 * target)} struts`;
-    warn.textContent = e.kept ? '' : (e.advice || `at ${resolution} cells the model's genus is ${e.genus}, ` +
-      `the surface's ${e.surface_genus}`);
+    out.textContent = estimateText(e, target);
+    warn.textContent = adviceText(e, resolution);
     warn.hidden = e.kept;
   }
 }

@@ -1,4 +1,6 @@
 // Download buttons: each asks the worker for the export and saves it (OBJ comes with its MTL).
+import { exportFileName } from './file_names.js';
+
 export const FORMATS = {
   vef: ['model.vef'], glb: ['model.glb'], obj: ['model.obj', 'model.mtl'], json: ['model.zome.json'], csv: ['parts.csv'],
 };
@@ -21,7 +23,7 @@ export class Downloads {
       button.addEventListener('click', async () => {
         try {
           for (const file of FORMATS[button.dataset.format]) {
-            const name = file.replace('model', this.baseName()).replace('parts', this.baseName() + '-parts');
+            const name = exportFileName(file, this.baseName());
             const { bytes } = await bridge.exportModel(name);
             saveBytes(name, bytes);
           }

@@ -2,7 +2,34 @@
 // viewer (onHover(kindIds | null)).
 import { KIND_NAMES } from './protocol.js';
 
-const SWATCH = { blue: '#1f5fd6', yellow: '#f2c20f', red: '#d42a1e', white: '#f4f4f4' };
+export const SWATCH = { blue: '#1f5fd6', yellow: '#f2c20f', red: '#d42a1e', white: '#f4f4f4' };
+
+// The table's text, kept pure (no DOM) so web/tests/ can check it.
+
+/** Rows in the report's order: the ball first, then each strut kind that is used (count > 0). */
+export function partRows(report) {
+  const rows = [{ part: report.ball_part_code, kind: 'ball', length: '17.67', count: report.balls,
+    color: 'white', kindIds: null }];
+  for (const k of report.kinds) {
+    if (!k.count) continue;
+    rows.push({ part: k.part_code, kind: k.kind, length: k.length_mm.toFixed(2), count: k.count,
+      color: k.color, kindIds: [KIND_NAMES.indexOf(k.kind)] });
+  }
+  return rows;
+}
+
+/** "226 balls, 577 struts, 38.11 m of struts; built size 49.0 × 46.7 × 45.3 cm" */
+export function totalsText(report) {
+  const size = report.size_cm.map((x) => x.toFixed(1)).join(' × ');
+  return `${report.balls} balls, ${report.strut_count} struts, ` +
+    `${(report.total_strut_length_mm / 1000).toFixed(2)} m of struts; built size ${size} cm`;
+}
+
+/** "Kit plan: 2 × Creator 3 + 1 × Basic (1845 parts bought)"; "none" when no kit is needed. */
+export function kitPlanText(plan) {
+  const kits = plan.kits.map((k) => `${k.count} × ${k.name}`).join(' + ') || 'none';
+  return `Kit plan: ${kits} (${plan.parts_bought} parts bought)`;
+}
 
 function cell(tag, text, cls) {
   const e = document.createElement(tag);
@@ -33,30 +60,22 @@ export class PartsTable {
     const head = document.createElement('tr');
     for (const h of ['part', 'kind', 'length mm', 'count']) head.append(cell('th', h));
     const rows = [head];
-    const ball = document.createElement('tr');
-    ball.append(cell('td', report.ball_part_code), cell('td', 'ball'), cell('td', '17.67'), cell('td', report.balls, 'n'));
-    ball.dataset.kind = 'ball';
-    rows.push(ball);
-    for (const k of report.kinds) {
-      if (!k.count) continue;
+    for (const r of partRows(report)) {
       const tr = document.createElement('tr');
-      const kindCell = cell('td', k.kind);
-      const swatch = cell('span', '', 'swatch');
-      swatch.style.background = SWATCH[k.color];
-      kindCell.prepend(swatch);
-      tr.append(cell('td', k.part_code), kindCell, cell('td', k.length_mm.toFixed(2)), cell('td', k.count, 'n'));
-      tr.dataset.kind = k.kind;
-      const ids = [KIND_NAMES.indexOf(k.kind)];
-      tr.addEventListener('mouseenter', () => { tr.classList.add('hover'); this.onHover(ids); });
-      tr.addEventListener('mouseleave', () => { tr.classList.remove('hover'); this.onHover(null); });
+      const kindCell = cell('td', r.kind);
+      if (r.kindIds) {
+        const swatch = cell('span', '', 'swatch');
+        swatch.style.background = SWATCH[r.color];
+        kindCell.prepend(swatch);
+        tr.addEventListener('mouseenter', () => { tr.classList.add('hover'); this.onHover(r.kindIds); });
+        tr.addEventListener('mouseleave', () => { tr.classList.remove('hover'); this.onHover(null); });
+      }
+      tr.append(cell('td', r.part), kindCell, cell('td', r.length), cell('td', r.count, 'n'));
+      tr.dataset.kind = r.kind;
       rows.push(tr);
     }
     this.table.replaceChildren(...rows);
-    const size = report.size_cm.map((x) => x.toFixed(1)).join(' × ');
-    this.totals.textContent = `${report.balls} balls, ${report.strut_count} struts, ` +
-      `${(report.total_strut_length_mm / 1000).toFixed(2)} m of struts; built size ${size} cm`;
-    const plan = report.kit_plan;
-    const kits = plan.kits.map((k) => `${k.count} × ${k.name}`).join(' + ') || 'none';
-    this.kits.textContent = `Kit plan: ${kits} (${plan.parts_bought} parts bought)`;
+    this.totals.textContent = totalsText(report);
+    this.kits.textContent = kitPlanText(report.kit_plan);
   }
 }

@@ -1,11 +1,21 @@
 // Share links: the model in the URL fragment (#m=1.…), never sent to a server.
 export function linkFromLocation() {
-  const hash = window.location.hash.replace(/^#/, '');
-  return /(^|&)m=/.test(hash) ? hash : null;
+  return linkFromHash(window.location.hash);
+}
+
+/** The fragment without '#' when it holds a model (an `m=` parameter), else null. Pure (tests). */
+export function linkFromHash(hash) {
+  const fragment = hash.replace(/^#/, '');
+  return /(^|&)m=/.test(fragment) ? fragment : null;
 }
 
 export function pageUrlWith(fragment) {
-  const url = new URL(window.location.href);
+  return urlWithFragment(window.location.href, fragment);
+}
+
+/** `href` with its fragment replaced (query kept). Pure (tests). */
+export function urlWithFragment(href, fragment) {
+  const url = new URL(href);
   url.hash = fragment;
   return url.href;
 }

@@ -4,12 +4,12 @@
 // THREE is passed in so this file has no import to resolve.
 
 // Sizes in Zome units (b0 = 46.27 mm centre to centre): ball 17.67 mm across, struts ~7 mm thick.
-const BALL_RADIUS = 17.673 / 2 / 46.27;
+export const BALL_RADIUS = 17.673 / 2 / 46.27;
 const STRUT_RADIUS = 3.6 / 46.27;
 export const COLOURS = { blue: 0x1f5fd6, yellow: 0xf2c20f, red: 0xd42a1e, ball: 0xf4f4f4, highlight: 0x20e070 };
 export const BACKGROUND = [0x20, 0x24, 0x2b];
-const KIND_COLOUR = ['blue', 'blue', 'blue', 'yellow', 'yellow', 'yellow', 'red', 'red', 'red'];
-const SECTION_SIDES = { blue: 4, yellow: 3, red: 5 };
+export const KIND_COLOUR = ['blue', 'blue', 'blue', 'yellow', 'yellow', 'yellow', 'red', 'red', 'red'];
+export const SECTION_SIDES = { blue: 4, yellow: 3, red: 5 };
 
 export function buildScene(THREE, camera) {
   const root = new THREE.Scene();

@@ -1,0 +1,165 @@
+// app.js with a scripted bridge and recording viewer/controls: a failure (bad file, bad link,
+// failed run, unreachable URL) becomes one status line and never replaces the model on screen;
+// successes update the name, the summary and the parts.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { App } from '../src/app.js';
+import { Event } from '../src/protocol.js';
+import { Status } from '../src/status.js';
+import { FakeElement, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
+
+const warnings = [];
+console.warn = (...args) => warnings.push(args.join(' ')); // Status.error logs; keep the output clean
+
+function makeApp(bridgeOverrides = {}) {
+  const listeners = {};
+  const bridge = {
+    on: (type, fn) => (listeners[type] ??= []).push(fn),
+    emit: (type, data) => (listeners[type] || []).forEach((fn) => fn(data)),
+    calls: [],
+    load: async (name) => { bridge.calls.push(['load', name]); return { kind: 'mesh', report: { vertices: 8, faces: 12, genus: 0 } }; },
+    surface: async () => ({ positions: new Float32Array(9), triangles: new Uint32Array([0, 1, 2]) }),
+    parts: async () => ({ balls: 5 }),
+    summary: async () => ({ balls: 5, struts: 4, by_kind: { B0: 2, Y0: 1, R0: 1 }, valid: true, genus: 0 }),
+    run: async (options) => { bridge.calls.push(['run', options]); return { state: 'done', seconds: 1.5, note: '' }; },
+    openLink: async () => ({ kind: 'model' }),
+    ...bridgeOverrides,
+  };
+  const viewer = { models: [], surfaces: [], setModel(s, o) { this.models.push(o); }, setSurface(s) { this.surfaces.push(s); } };
+  const controls = { sets: [], running: [], estimates: 0, set(o) { this.sets.push(o); }, get: () => ({ seconds: 5, seed: 3 }),
+    setRunning(r) { this.running.push(r); }, scheduleEstimate() { this.estimates++; } };
+  const plot = { resets: 0, reset() { this.resets++; }, update() {} };
+  const parts = { shown: 0, cleared: 0, show() { this.shown++; }, clear() { this.cleared++; } };
+  const statusEl = new FakeElement('div'), summaryEl = new FakeElement('div'), surfaceEl = new FakeElement('div');
+  const app = new App({ bridge, viewer, controls, plot, parts, status: new Status(statusEl), summaryEl, surfaceEl });
+  return { app, bridge, viewer, controls, plot, parts, statusEl, summaryEl, surfaceEl };
+}
+
+/** A bridge whose load shows a model the way the worker does: the snapshot event, then the reply. */
+const modelLoad = (bridge) => async () => {
+  bridge.emit(Event.SNAPSHOT, { snapshot: { version: 1 } });
+  return { kind: 'model' };
+};
+
+test('a model file: its snapshot is framed, later ones are not; name, summary and parts follow', async () => {
+  const t = makeApp();
+  t.bridge.load = modelLoad(t.bridge);
+  assert.deepEqual(await t.app.loadBytes('torus.zome.json', new ArrayBuffer(1)), { kind: 'model' });
+  t.bridge.emit(Event.SNAPSHOT, { snapshot: { version: 2 } }); // e.g. the next run's progress
+  assert.deepEqual(t.viewer.models, [{ fit: true }, { fit: false }]);
+  assert.equal(t.app.currentName, 'torus');
+  assert.equal(t.statusEl.textContent, 'torus.zome.json: model loaded.');
+  assert.equal(t.summaryEl.textContent, '5 balls, 4 struts (B0 2, Y0 1, R0 1) · valid, genus 0');
+  assert.equal(t.parts.shown, 1);
+});
+
+test('a mesh: its surface and diagnosis are shown and the estimate refreshed', async () => {
+  const t = makeApp();
+  t.bridge.load = async () => ({ kind: 'mesh', report: { vertices: 8, faces: 12, genus: 1, repaired: ['merged 2 vertices'] } });
+  await t.app.loadBytes('ring.OBJ', new ArrayBuffer(1));
+  assert.equal(t.surfaceEl.textContent, 'ring.OBJ: 8 vertices, 12 triangles, genus 1 (repaired: merged 2 vertices)');
+  assert.equal(t.viewer.surfaces.length, 1);
+  assert.equal(t.controls.estimates, 1);
+  assert.equal(t.app.currentName, 'ring');
+});
+
+test('a file the core refuses: one red line naming the file, and the model on screen stays', async () => {
+  const t = makeApp();
+  t.bridge.load = modelLoad(t.bridge);
+  await t.app.loadBytes('torus.zome.json', new ArrayBuffer(1));
+  t.bridge.load = async () => { throw new Error('the file is empty'); };
+  const result = await t.app.loadBytes('empty.obj', new ArrayBuffer(0));
+  assert.deepEqual(result, { ok: false, error: 'empty.obj: the file is empty' });
+  assert.equal(t.statusEl.textContent, 'empty.obj: the file is empty');
+  assert.equal(t.statusEl.className, 'status error');
+  assert.equal(t.app.lastError, 'empty.obj: the file is empty');
+  assert.equal(t.app.currentName, 'torus'); // downloads keep the shown model's name
+  assert.equal(t.viewer.models.length, 1);
+  assert.equal(t.viewer.surfaces.length, 0);
+  t.bridge.load = async () => { throw new Error('bad.ply: list length out of range'); };
+  assert.equal((await t.app.loadBytes('bad.ply', new ArrayBuffer(1))).error, 'bad.ply: list length out of range'); // not "bad.ply: bad.ply: …"
+});
+
+test('a refused file does not leave the next model\'s framing switched on', async () => {
+  const t = makeApp();
+  t.bridge.load = modelLoad(t.bridge);
+  await t.app.loadBytes('torus.zome.json', new ArrayBuffer(1));
+  t.bridge.load = async () => { throw new Error('not a mesh'); };
+  await t.app.loadBytes('x.obj', new ArrayBuffer(1), { fit: true });
+  t.bridge.emit(Event.SNAPSHOT, { snapshot: { version: 2 } });
+  assert.deepEqual(t.viewer.models.at(-1), { fit: false });
+});
+
+test('while a run is going a new file is refused before it reaches the core', async () => {
+  const t = makeApp();
+  t.app.running = true;
+  const result = await t.app.loadBytes('next.obj', new ArrayBuffer(1));
+  assert.equal(result.error, 'next.obj: a run is in progress; cancel it first');
+  assert.deepEqual(t.bridge.calls, []);
+});
+
+test('a bad share link: "share link: …", the model stays; a good one is named shared-model', async () => {
+  const t = makeApp({ openLink: async () => { throw new Error('not a share link (no m=1.…)'); } });
+  assert.deepEqual(await t.app.openLink('#q=1'), { ok: false, error: 'share link: not a share link (no m=1.…)' });
+  assert.equal(t.statusEl.className, 'status error');
+  assert.equal(t.app.currentName, 'model');
+  assert.equal(t.parts.shown, 0);
+  t.bridge.openLink = async () => ({ kind: 'model' });
+  assert.deepEqual(await t.app.openLink('#m=1.AB'), { ok: true });
+  assert.equal(t.app.currentName, 'shared-model');
+  assert.equal(t.app.lastError, null);
+});
+
+test('a run gets the controls\' options; the end is reported with time and note', async () => {
+  const t = makeApp();
+  t.bridge.run = async (o) => { t.bridge.calls.push(['run', o]); return { state: 'done', seconds: 1.54, note: 'target reached' }; };
+  const final = await t.app.run({ seed: 3 });
+  assert.deepEqual(t.controls.sets, [{ seed: 3 }]);
+  assert.deepEqual(t.bridge.calls, [['run', { seconds: 5, seed: 3 }]]);
+  assert.equal(final.state, 'done');
+  assert.equal(t.statusEl.textContent, 'Finished in 1.5 s. target reached');
+  assert.deepEqual(t.controls.running, [true, false]);
+  assert.equal(t.app.runCount, 1);
+  t.bridge.run = async () => ({ state: 'cancelled', seconds: 2, note: '' });
+  await t.app.run();
+  assert.equal(t.statusEl.textContent, 'Cancelled; kept the best model in 2.0 s.');
+});
+
+test('a failed run: "run: …", the page is idle again and the kept model\'s results refreshed', async () => {
+  const t = makeApp({ run: async () => { throw new Error('out of memory'); } });
+  const final = await t.app.run();
+  assert.deepEqual(final, { state: 'failed', error: 'out of memory' });
+  assert.equal(t.statusEl.textContent, 'run: out of memory');
+  assert.equal(t.app.running, false);
+  assert.deepEqual(t.controls.running, [true, false]);
+  assert.equal(t.parts.shown, 1);
+  await assert.rejects(async () => { t.app.running = true; await t.app.run(); }, { message: 'a run is in progress' });
+});
+
+test('results that cannot be read clear the panel instead of throwing; an invalid model says so', async () => {
+  const t = makeApp({ parts: async () => { throw new Error('no model'); } });
+  t.summaryEl.textContent = 'stale';
+  await t.app.refreshResults();
+  assert.equal(t.parts.cleared, 1);
+  assert.equal(t.summaryEl.textContent, '');
+  t.bridge.parts = async () => ({});
+  t.bridge.summary = async () => ({ balls: 3, struts: 3, by_kind: { B0: 3 }, valid: false });
+  await t.app.refreshResults();
+  assert.equal(t.summaryEl.textContent, '3 balls, 3 struts (B0 3) · NOT valid');
+});
+
+test('loadUrl: an unreachable URL is one status line; an odd %-escape in its name does not throw', async () => {
+  const restoreDocument = setGlobal('document', fakeDocument());
+  const restoreFetch = setGlobal('fetch', async () => ({ ok: false, status: 404 }));
+  try {
+    const t = makeApp();
+    assert.deepEqual(await t.app.loadUrl('samples/missing.obj'),
+      { ok: false, error: 'missing.obj: could not fetch it (samples/missing.obj: HTTP 404)' });
+    const odd = await t.app.loadUrl('samples/50%off.obj'); // decodeURIComponent('50%off.obj') throws
+    assert.equal(odd.error, '50%off.obj: could not fetch it (samples/50%off.obj: HTTP 404)');
+    assert.equal(t.viewer.models.length, 0);
+  } finally {
+    restoreDocument();
+    restoreFetch();
+  }
+});
