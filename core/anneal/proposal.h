@@ -58,8 +58,9 @@ enum class Rejection : uint8_t
     LinkTwice,     //!< a link node pointed to twice (non-disc neighbourhood)
     Topology,      //!< any other manifold/genus safeguard
     Overflow,      //!< the change did not fit LocalChange's fixed capacity
+    FoldedQuad,    //!< a quad whose diagonal is also a strut (two faces folded onto each other)
 };
-inline constexpr int kRejectionKinds = 11;
+inline constexpr int kRejectionKinds = 12;
 std::string_view rejection_name(Rejection r) noexcept;
 
 struct Proposal

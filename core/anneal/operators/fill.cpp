@@ -132,6 +132,57 @@ Rejection check_surviving(const ZomeMesh &mesh, const Fill &fill, const LocalCha
     return kept + mine.slots.size() < 3 ? Rejection::Valence : Rejection::None;
 }
 
+bool removed_face(const LocalChange &change, Face f) noexcept
+{
+    return std::find(change.removed_faces().begin(), change.removed_faces().end(), f) !=
+           change.removed_faces().end();
+}
+
+// Whether fill nodes a and b end up joined by a strut: a new one, or a surviving one.
+bool joined_after(const ZomeMesh &mesh, const Fill &fill, const FillStruts &struts, const LocalChange &change,
+                  uint8_t a, uint8_t b) noexcept
+{
+    if (fill.is_link_edge(a, b) || fill.is_link_edge(b, a))
+        return true;
+    for (const FillStrut &s : struts)
+        if ((s.a == a && s.b == b) || (s.a == b && s.b == a))
+            return true;
+    const Vertex va = fill.nodes()[a].v, vb = fill.nodes()[b].v;
+    if (!va.is_valid() || !vb.is_valid())
+        return false;
+    const Halfedge h = mesh.find_halfedge(va, vb);
+    return h.is_valid() && !removed(change, ZomeMesh::edge(h));
+}
+
+// A quad whose diagonal is also a strut folds two faces onto each other: the Zome model cannot
+// be built that way (paper §3.2: fold-overs lead to strut collisions). Refused both ways: a new
+// quad over a joined diagonal, and a new strut across a surviving quad. Reads only faces at
+// claimed link nodes.
+Rejection check_quad_diagonals(const ZomeMesh &mesh, const Fill &fill, const FillStruts &struts,
+                               const LocalChange &change) noexcept
+{
+    for (const FillFace &f : fill.faces())
+        if (f.size == 4 && (joined_after(mesh, fill, struts, change, f.corners[0], f.corners[2]) ||
+                            joined_after(mesh, fill, struts, change, f.corners[1], f.corners[3])))
+            return Rejection::FoldedQuad;
+    for (const FillStrut &s : struts)
+    {
+        const Vertex va = fill.nodes()[s.a].v, vb = fill.nodes()[s.b].v;
+        if (!va.is_valid() || !vb.is_valid())
+            continue;
+        for (Halfedge h : outgoing_halfedges(mesh, va))
+        {
+            const Face f = mesh.face(h);
+            if (!f.is_valid() || removed_face(change, f) || mesh.valence(f) != 4)
+                continue;
+            // h leaves va along f; the corner two steps on is va's opposite corner in f.
+            if (mesh.to_vertex(mesh.next(h)) == vb)
+                return Rejection::FoldedQuad;
+        }
+    }
+    return Rejection::None;
+}
+
 } // namespace
 
 bool position_usable(const ZomeMesh &mesh, const LocalChange &change, const ZVec &p) noexcept
@@ -226,6 +277,8 @@ Rejection complete_fill(const ZomeMesh &mesh, const Fill &fill, Claims &claims, 
     }
     if (low_valence != Rejection::None)
         return low_valence;
+    if (const Rejection r = check_quad_diagonals(mesh, fill, struts, change); r != Rejection::None)
+        return r;
 
     // E_fair of a node whose struts change reads its neighbours' positions: claim them.
     for (Vertex v : changed_nodes)

@@ -50,6 +50,8 @@ std::string_view rejection_name(Rejection r) noexcept
         return "link node twice";
     case Rejection::Topology:
         return "topology";
+    case Rejection::FoldedQuad:
+        return "folded quad";
     case Rejection::Overflow:
         return "overflow";
     }

@@ -12,6 +12,7 @@
 
 #include <gtest/gtest.h>
 
+#include "core/mesh/element_ranges.h"
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
 #include "tests/anneal/operators/operator_test_support.h"
@@ -60,6 +61,23 @@ OperatorKind pick_kind(Rng &rng, size_t nodes, size_t initial)
     return kind;
 }
 
+// Quads whose diagonal is also a strut (two faces folded onto each other; never buildable).
+size_t folded_quads(const ZomeMesh &mesh)
+{
+    size_t folded = 0;
+    for (Face f : faces(mesh))
+    {
+        if (mesh.valence(f) != 4)
+            continue;
+        const Halfedge h = mesh.halfedge(f);
+        const Vertex a = mesh.from_vertex(h), b = mesh.to_vertex(h);
+        const Vertex c = mesh.to_vertex(mesh.next(h)), d = mesh.to_vertex(mesh.next(mesh.next(h)));
+        if (mesh.find_edge(a, c).is_valid() || mesh.find_edge(b, d).is_valid())
+            ++folded;
+    }
+    return folded;
+}
+
 TEST(OperatorInvariants, RandomApplicationsKeepEveryInvariant)
 {
     std::vector<fixtures::NamedModel> models;
@@ -103,6 +121,8 @@ TEST(OperatorInvariants, RandomApplicationsKeepEveryInvariant)
                 ASSERT_TRUE(report.ok()) << "after " << applied << " applications, last " << operator_name(kind) << ": "
                                          << report.message();
                 ASSERT_EQ(report.genus, named.genus) << "after " << applied << " applications";
+                ASSERT_EQ(folded_quads(mesh), 0u) << "after " << applied << " applications, last "
+                                                  << operator_name(kind);
             }
             if (mesh.n_vertices() * 4 < mesh.vertices_size())
                 mesh.garbage_collection();
