@@ -1,4 +1,4 @@
-# libFuzzer targets (tests/fuzz): clang only, in their own build dir (build/fuzz, see tests/build.sh).
+# libFuzzer targets (tests/fuzz): clang only; tests/build.sh builds them in build/asan beside the sanitized test suite.
 # Everything is instrumented for coverage plus ASan and UBSan; only the fuzz executables link libFuzzer.
 option(ZOME_BUILD_FUZZ "Build the libFuzzer targets in tests/fuzz (clang, own build dir)" OFF)
 if(ZOME_BUILD_FUZZ)

@@ -2,9 +2,11 @@
 # Configures and builds the named flavours:
 #   native  build/native     Release, warnings as errors (tests, CLI, benchmarks)
 #   wasm    build/wasm       the same core, tests, CLI and benchmarks with Emscripten (pthreads), run under node
-#   asan    build/asan       -O2 -g with AddressSanitizer + UndefinedBehaviorSanitizer (optimised so the suite stays quick)
-#   tsan    build/tsan-lane  -O2 -g with ThreadSanitizer; only the test binary (the lane runs `ctest -L parallel`)
-#   fuzz    build/fuzz       clang libFuzzer targets with ASan + UBSan (tests/fuzz); only the fuzz executables
+#   asan    build/asan       clang -O2 -g, AddressSanitizer + UndefinedBehaviorSanitizer + libFuzzer coverage:
+#                            the whole test suite and the libFuzzer targets of tests/fuzz from one compile
+#   tsan    build/tsan-lane  clang -O2 -g with ThreadSanitizer; only the test binary (the lane runs `ctest -L parallel`)
+#   fuzz    the same as asan (kept as a name for tests/fuzz/run.sh)
+# The sanitizer builds use clang: with UBSan it compiles this code base about 3x faster than g++ 12.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export NODE_PATH=/usr/share/nodejs   # emscripten 3.1.6 needs Debian's acorn (toolchain.md)
@@ -15,14 +17,14 @@ for flavour in "$@"; do
   case "$flavour" in
     native) cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON >/dev/null ;;
     wasm)   emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON >/dev/null ;;
-    asan)   cmake -S . -B build/asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZOME_SANITIZE="address;undefined" \
-              -DZOME_BUILD_BENCH=OFF >/dev/null ;;
-    tsan)   dir=build/tsan-lane; targets=(zome_tests)
-            cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZOME_SANITIZE=thread \
-              -DZOME_BUILD_BENCH=OFF >/dev/null ;;
-    fuzz)   targets=("${fuzz_targets[@]}")
+    asan|fuzz)
+            dir=build/asan
+            [ "$flavour" = fuzz ] && targets=("${fuzz_targets[@]}")
             CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZOME_BUILD_FUZZ=ON \
-              -DZOME_BUILD_TESTS=OFF -DZOME_BUILD_BENCH=OFF -DZOME_STRICT=ON >/dev/null ;;
+              -DZOME_SANITIZE="address;undefined" -DZOME_BUILD_BENCH=OFF -DZOME_STRICT=ON >/dev/null ;;
+    tsan)   dir=build/tsan-lane; targets=(zome_tests)
+            CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DZOME_SANITIZE=thread \
+              -DZOME_BUILD_BENCH=OFF >/dev/null ;;
     *) echo "build.sh: unknown flavour '$flavour'" >&2; exit 2 ;;
   esac
   echo "build: $flavour"

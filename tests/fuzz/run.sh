@@ -3,7 +3,7 @@
 #   tests/fuzz/run.sh SECONDS [TARGET...]       targets: obj stl ply off gltf glb vef zome_json share_link
 # Environment: FUZZ_RUNS=N also stops a target after N executions; FUZZ_NICE (default 15);
 # FUZZ_RSS_MB (default 2048); FUZZ_TIMEOUT seconds per input before it counts as a hang (default 10).
-# Builds build/fuzz if needed, generates seeds from ../shared into build/fuzz/seeds, keeps each target's
+# Builds the targets in build/asan if needed (tests/build.sh fuzz), generates seeds from ../shared into build/fuzz/seeds, keeps each target's
 # growing corpus in build/fuzz/corpus/<target>, findings in build/fuzz/findings/<target>/, one line
 # per target in build/fuzz/results.tsv, and ends with "fuzz: N passed, M failed" (a target passes
 # when it ran its time without a crash, hang, leak or broken invariant).
@@ -13,9 +13,10 @@ all_targets=(obj stl ply off gltf glb vef zome_json share_link)
 seconds=${1:?usage: tests/fuzz/run.sh SECONDS [TARGET...]}; shift
 targets=("$@"); [ ${#targets[@]} -gt 0 ] || targets=("${all_targets[@]}")
 shared=${ZOME_SHARED_DIR:-../shared}
-dir=build/fuzz
+bin=build/asan/tests/fuzz
+dir=build/fuzz; mkdir -p "$dir"
 
-if [ ! -x "$dir/tests/fuzz/fuzz_${targets[0]}" ] || [ "${FUZZ_REBUILD:-0}" = 1 ]; then
+if [ ! -x "$bin/fuzz_${targets[0]}" ] || [ "${FUZZ_REBUILD:-0}" = 1 ]; then
   bash tests/build.sh fuzz >/dev/null || { echo "fuzz: 0 passed, 1 failed (build)"; exit 1; }
 fi
 if [ ! -d "$dir/seeds" ]; then
@@ -37,7 +38,7 @@ max_len() { # inputs larger than this are cut: small inputs mutate and run faste
 passed=0; failed=0
 printf 'target\tseconds\texecutions\texec_per_s\tpeak_rss_mb\tcorpus\tresult\n' > "$dir/results.tsv"
 for t in "${targets[@]}"; do
-  exe="$dir/tests/fuzz/fuzz_$t"
+  exe="$bin/fuzz_$t"
   [ -x "$exe" ] || { echo "fuzz: unknown target '$t'" >&2; failed=$((failed + 1)); continue; }
   mkdir -p "$dir/corpus/$t" "$dir/findings/$t" "$dir/logs"
   log="$dir/logs/$t.log"
