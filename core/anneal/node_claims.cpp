@@ -2,17 +2,14 @@
 
 namespace zomeify {
 
-NodeTags::NodeTags(size_t capacity) : capacity_(capacity), owners_(new std::atomic<uint32_t>[capacity])
-{
-    for (size_t i = 0; i < capacity; ++i) owners_[i].store(0, std::memory_order_relaxed);
-}
+NodeTags::NodeTags(size_t capacity) : capacity_(capacity), owners_(new Owner[capacity]) {}
 
 bool NodeTags::try_take(Vertex v, uint32_t owner) noexcept
 {
     if (v.idx() >= capacity_) return false;
     uint32_t expected = 0;
     // acquire: what the previous owner committed before releasing is visible to us.
-    if (owners_[v.idx()].compare_exchange_strong(expected, owner, std::memory_order_acquire,
+    if (owners_[v.idx()].word.compare_exchange_strong(expected, owner, std::memory_order_acquire,
                                                  std::memory_order_relaxed))
         return true;
     return expected == owner;
@@ -23,13 +20,13 @@ void NodeTags::release(Vertex v, uint32_t owner) noexcept
     if (v.idx() >= capacity_) return;
     uint32_t expected = owner;
     // release: our commit's writes are published to the next owner.
-    owners_[v.idx()].compare_exchange_strong(expected, 0, std::memory_order_release,
+    owners_[v.idx()].word.compare_exchange_strong(expected, 0, std::memory_order_release,
                                              std::memory_order_relaxed);
 }
 
 uint32_t NodeTags::owner(Vertex v) const noexcept
 {
-    return v.idx() < capacity_ ? owners_[v.idx()].load(std::memory_order_acquire) : 0;
+    return v.idx() < capacity_ ? owners_[v.idx()].word.load(std::memory_order_acquire) : 0;
 }
 
 bool Claims::take(Vertex v) noexcept

@@ -5,7 +5,7 @@
 //! thread until released, and every commit only changes elements whose nodes its thread holds, so
 //! what a thread has claimed cannot change under it: validity and ΔE need no global lock.
 //!
-//! NodeTags is the shared table (one atomic owner word per node index, sized to the capacity the
+//! NodeTags is the shared table (one atomic owner word per node index, each on its own cache line, sized to the capacity the
 //! engine reserves before starting threads). Claims is one proposal's set of held nodes.
 //! Single-threaded use passes no table: every claim succeeds and nothing is shared.
 
@@ -33,8 +33,14 @@ public:
     uint32_t owner(Vertex v) const noexcept;
 
 private:
+    // One cache line per node: threads claim and release nodes all the time, and with packed words
+    // every claim would also invalidate the line holding 15 other nodes' words in the other cores.
+    struct alignas(64) Owner
+    {
+        std::atomic<uint32_t> word{0};
+    };
     size_t capacity_;
-    std::unique_ptr<std::atomic<uint32_t>[]> owners_;
+    std::unique_ptr<Owner[]> owners_;
 };
 
 class Claims

@@ -1,14 +1,72 @@
 #include "core/anneal/surface_context.h"
 
 #include <cmath>
+#include <limits>
+#include <memory>
 
 #include "core/base/errors.h"
 
 namespace zomeify {
 
+namespace {
+
+std::atomic<uint64_t> next_generation{1};
+
+// A thread's private cache of finished samples: direct mapped, 256 KiB (fits a core's L2 cache).
+// Entries hold the point itself, compared exactly, so a slot shared by two points costs a lookup
+// in the shared cache, never a wrong value. A NaN point matches nothing (an empty slot).
+class ThreadSamples
+{
+public:
+    static constexpr size_t kSlots = 16384;
+
+    // The table for `generation`, emptied if it last served another one.
+    static ThreadSamples& for_generation(uint64_t generation)
+    {
+        thread_local std::unique_ptr<ThreadSamples> mine;
+        if (!mine)
+            mine = std::make_unique<ThreadSamples>();
+        if (mine->generation_ != generation)
+        {
+            mine->clear();
+            mine->generation_ = generation;
+        }
+        return *mine;
+    }
+
+    const SurfaceSample* find(uint64_t key, const Vec3& p) const noexcept
+    {
+        const Slot& s = slots_[key & (kSlots - 1)];
+        return s.point == p ? &s.sample : nullptr;
+    }
+    void put(uint64_t key, const Vec3& p, const SurfaceSample& sample) noexcept
+    {
+        Slot& s = slots_[key & (kSlots - 1)];
+        s.point = p;
+        s.sample = sample;
+    }
+
+private:
+    struct Slot
+    {
+        Vec3 point = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+        SurfaceSample sample;
+    };
+    void clear() noexcept
+    {
+        for (size_t i = 0; i < kSlots; ++i) slots_[i].point = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+    }
+
+    uint64_t generation_ = 0;
+    std::unique_ptr<Slot[]> slots_ = std::make_unique<Slot[]>(kSlots);
+};
+
+} // namespace
+
 SurfaceContext::SurfaceContext(const SurfaceProjector& projector, const ModelTransform& transform,
                                const ProjectionCacheOptions& cache)
-    : projector_(projector), inside_(projector), transform_(transform), cache_(projector, cache)
+    : projector_(projector), inside_(projector), transform_(transform), cache_(projector, cache),
+      generation_(next_generation.fetch_add(1))
 {
     if (!std::isfinite(transform.scale) || !(transform.scale > 0.0))
     {
@@ -22,20 +80,26 @@ SurfaceContext::SurfaceContext(const SurfaceProjector& projector, const ModelTra
 SurfaceSample SurfaceContext::sample(const LatticeSum& sum, int divisor) const noexcept
 {
     const Vec3 p = to_mesh(sum.divided(divisor));
-    const ClosestPoint closest = cache_.project(sum.key(divisor), p);
+    const uint64_t key = sum.key(divisor);
+    ThreadSamples& mine = ThreadSamples::for_generation(generation_.load(std::memory_order_relaxed));
+    if (const SurfaceSample* known = mine.find(key, p))
+        return *known;
+    const ClosestPoint closest = cache_.project(key, p);
     SurfaceSample out;
     // The transform is a uniform scale, so distances convert by 1/scale and normals not at all.
     out.distance_squared = closest.distance_squared * inv_scale_squared_;
     out.normal = closest.normal;
     out.inside = inside_.is_inside(p, closest);
+    mine.put(key, p, out);
     return out;
 }
 
-Vec3 SurfaceContext::node_normal(const ZVec& p) const noexcept
+Vec3 SurfaceContext::node_normal(const ZVec& p) const noexcept { return sample(lattice_sum(p), 1).normal; }
+
+void SurfaceContext::clear_cache()
 {
-    const LatticeSum sum = lattice_sum(p);
-    const Vec3 q = to_mesh(sum.divided(1));
-    return cache_.project(sum.key(1), q).normal;
+    cache_.clear();
+    generation_.store(next_generation.fetch_add(1), std::memory_order_relaxed);
 }
 
 } // namespace zomeify

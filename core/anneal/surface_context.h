@@ -5,9 +5,13 @@
 //! sample is on (which forbidden zone applies) and the surface normal at π(p).
 //!
 //! Samples are given exactly, as a LatticeSum and a divisor (node: 1, strut midpoint: 2, face
-//! barycentre: 3 or 4), mapped to mesh units by the model transform and projected through a
-//! ProjectionCache keyed by the exact sum, so a position that comes back (the common case in
-//! annealing) costs one hash lookup.
+//! barycentre: 3 or 4), mapped to mesh units by the model transform and looked up in two caches
+//! keyed by the exact sum: first a small direct-mapped cache of finished samples private to the
+//! calling thread (no lock, no shared write: annealing threads do not slow each other down), then
+//! the ProjectionCache shared by all threads, then the projector. A position that comes back (the
+//! common case in annealing) costs one probe of the thread's own table.
+
+#include <atomic>
 
 #include "core/anneal/lattice_sum.h"
 #include "core/geom/closest_point.h"
@@ -50,8 +54,9 @@ public:
     const SurfaceProjector& projector() const noexcept { return projector_; }
     //! Cache counters (hits, misses, size).
     ProjectionCacheStats cache_stats() const { return cache_.stats(); }
-    //! Empties the cache (results never change; only speed does).
-    void clear_cache() { cache_.clear(); }
+    //! Empties the caches, every thread's included (results never change; only speed does). Not
+    //! while another thread samples.
+    void clear_cache();
 
 private:
     const SurfaceProjector& projector_;
@@ -62,6 +67,9 @@ private:
     double inv_scale_squared_ = 1.0;
     //! Mutable because a lookup stores what it computed; values are a pure function of the point.
     mutable ProjectionCache cache_;
+    //! Names this context (and this content of its caches) for the threads' private caches, which
+    //! start over when the context they served is not this one any more.
+    std::atomic<uint64_t> generation_;
 };
 
 } // namespace zomeify

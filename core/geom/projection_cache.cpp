@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <bit>
 #include <mutex>
+
+#include "core/base/spin_lock.h"
 #include <utility>
 #include <vector>
 
@@ -88,12 +90,13 @@ private:
 
 struct alignas(64) ProjectionCache::Shard
 {
-    std::mutex mutex;
+    SpinLock mutex; // held for one probe: see spin_lock.h
     Table current;
     Table previous;
     uint64_t rotations = 0;
+    uint64_t hits = 0, misses = 0; // project()'s lookups
 
-    // Called with the mutex held.
+    // Called with the lock held.
     void put(uint64_t hash, uint64_t key, const Vec3& p, const ClosestPoint& value)
     {
         if (current.full() && current.find(hash, key) == nullptr)
@@ -128,13 +131,18 @@ ProjectionCache::Shard& ProjectionCache::shard_of(uint64_t hash) const
     return shards_[(hash >> 40) & (shard_count_ - 1)];
 }
 
-std::optional<ClosestPoint> ProjectionCache::find(uint64_t key, const Vec3& p)
+std::optional<ClosestPoint> ProjectionCache::find(uint64_t key, const Vec3& p) { return lookup(key, p, false); }
+
+// Counted in the shard, under the lock already held: a counter shared by all threads would be
+// written by every lookup of every thread, and that one cache line would bounce between cores.
+std::optional<ClosestPoint> ProjectionCache::lookup(uint64_t key, const Vec3& p, bool count)
 {
     const uint64_t hash = mix(key);
     Shard& shard = shard_of(hash);
     std::lock_guard lock(shard.mutex);
     if (const Entry* e = shard.current.find(hash, key); e != nullptr && e->point == p)
     {
+        shard.hits += count ? 1 : 0;
         return e->value;
     }
     if (const Entry* e = shard.previous.find(hash, key); e != nullptr && e->point == p)
@@ -142,8 +150,10 @@ std::optional<ClosestPoint> ProjectionCache::find(uint64_t key, const Vec3& p)
         // Copy before put(): a rotation clears the table `e` points into.
         const ClosestPoint value = e->value;
         shard.put(hash, key, p, value);
+        shard.hits += count ? 1 : 0;
         return value;
     }
+    shard.misses += count ? 1 : 0;
     return std::nullopt;
 }
 
@@ -157,12 +167,8 @@ void ProjectionCache::insert(uint64_t key, const Vec3& p, const ClosestPoint& va
 
 ClosestPoint ProjectionCache::project(uint64_t key, const Vec3& p)
 {
-    if (std::optional<ClosestPoint> cached = find(key, p))
-    {
-        hits_.fetch_add(1, std::memory_order_relaxed);
+    if (std::optional<ClosestPoint> cached = lookup(key, p, true))
         return *cached;
-    }
-    misses_.fetch_add(1, std::memory_order_relaxed);
     // Computed without holding the shard lock: two threads missing on the same point may both
     // compute it, which is cheaper than making every other thread of the shard wait.
     const ClosestPoint value = projector_.project(p);
@@ -177,21 +183,19 @@ void ProjectionCache::clear()
         std::lock_guard lock(shards_[s].mutex);
         shards_[s].current.clear();
         shards_[s].previous.clear();
-        shards_[s].rotations = 0;
+        shards_[s].rotations = shards_[s].hits = shards_[s].misses = 0;
     }
-    hits_.store(0, std::memory_order_relaxed);
-    misses_.store(0, std::memory_order_relaxed);
 }
 
 ProjectionCacheStats ProjectionCache::stats() const
 {
     ProjectionCacheStats out;
-    out.hits = hits_.load(std::memory_order_relaxed);
-    out.misses = misses_.load(std::memory_order_relaxed);
     for (size_t s = 0; s < shard_count_; ++s)
     {
         std::lock_guard lock(shards_[s].mutex);
         out.rotations += shards_[s].rotations;
+        out.hits += shards_[s].hits;
+        out.misses += shards_[s].misses;
         out.size += shards_[s].current.size() + shards_[s].previous.size();
     }
     return out;

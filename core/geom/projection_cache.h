@@ -67,12 +67,11 @@ private:
     struct Shard;
 
     Shard& shard_of(uint64_t hash) const;
+    std::optional<ClosestPoint> lookup(uint64_t key, const Vec3& p, bool count);
 
     const SurfaceProjector& projector_;
     std::unique_ptr<Shard[]> shards_;
     size_t shard_count_ = 1;
-    std::atomic<uint64_t> hits_{0};
-    std::atomic<uint64_t> misses_{0};
 };
 
 } // namespace zomeify

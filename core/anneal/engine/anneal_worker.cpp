@@ -3,8 +3,10 @@
 #include <exception>
 #include <functional>
 #include <optional>
+#include <vector>
 
 #include "core/anneal/engine/annealer_state.h"
+#include "core/anneal/engine/seed_slabs.h"
 #include "core/anneal/proposal.h"
 
 namespace zomeify {
@@ -95,12 +97,27 @@ private:
         });
         if (tags_generation_ != s_.tags_generation)
             make_claims();
+        // Compaction renumbers the nodes.
+        seeds_.clear();
+        slab_epoch_ = kNoEpoch;
+    }
+
+    // With several threads, the seeds of this thread's slab for the current epoch (seed_slabs.h).
+    void refresh_slab(uint64_t proposals_done)
+    {
+        const uint64_t epoch = proposals_done / kSlabEpochProposals;
+        if (!shared_ || epoch == slab_epoch_)
+            return;
+        std::lock_guard lock(s_.commit_mutex);
+        seeds_ = seed_slab(s_.mesh, epoch, index_, s_.options.threads);
+        slab_epoch_ = epoch;
     }
 
     // Budget, temperature and progress, once per batch. False when the budget is used.
     bool checkpoint()
     {
         flush();
+        refresh_slab(s_.proposals.load(std::memory_order_relaxed));
         double fraction = 0.0;
         if (by_proposals_)
         {
@@ -140,7 +157,8 @@ private:
         const uint32_t published = s_.published_vertices.load(std::memory_order_acquire);
         if (published == 0)
             return;
-        const Vertex seed(static_cast<MeshIndex>(rng_.below(published)));
+        const Vertex seed(seeds_.empty() ? static_cast<MeshIndex>(rng_.below(published))
+                                         : seeds_[rng_.below(seeds_.size())]);
         if (!claims_->take(seed))
         {
             ++totals_.busy_seeds;
@@ -229,6 +247,9 @@ private:
     std::optional<Claims> claims_;
     uint64_t tags_generation_ = 0;
     Proposal proposal_;
+    static constexpr uint64_t kNoEpoch = ~uint64_t{0};
+    std::vector<MeshIndex> seeds_; // empty: draw among all nodes
+    uint64_t slab_epoch_ = kNoEpoch;
     double temperature_ = 0.0;
     uint64_t own_proposals_ = 0;
     uint64_t unflushed_proposals_ = 0, unflushed_valid_ = 0, unflushed_commits_ = 0;
