@@ -32,13 +32,17 @@ FaceEnergy face_energy(std::span<const ZVec> corners, NodeNormals& normals, cons
     FaceEnergy out;
     const size_t k = corners.size();
     LatticeSum sum;
+    Vec3 newell = Vec3::Zero();
     for (size_t i = 0; i < k; ++i)
     {
         sum += corners[i];
         out.normal += corner_energy(corners[(i + k - 1) % k], corners[i], corners[(i + 1) % k], normals.at(corners[i]));
+        newell += lattice_sum(corners[i]).divided(1).cross(lattice_sum(corners[(i + 1) % k]).divided(1));
     }
     out.corners = static_cast<int>(k);
-    out.distance = quantize(distance_value(normals.context().sample(sum, out.corners), options));
+    const SurfaceSample barycentre = normals.context().sample(sum, out.corners);
+    out.distance = quantize(distance_value(barycentre, options));
+    out.fold_over = is_fold_over(newell, barycentre.normal);
     return out;
 }
 

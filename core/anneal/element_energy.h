@@ -26,6 +26,7 @@ struct FaceEnergy
     EnergyFixed distance = 0;
     EnergyAccumulator normal = 0;
     int corners = 0;
+    bool fold_over = false; //!< faces against the surface at its barycentre (is_fold_over)
 };
 
 //! Distance sample of a node at p.

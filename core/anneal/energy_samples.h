@@ -48,6 +48,13 @@ double tangential_value(const Vec3& d, const Vec3& n) noexcept;
 //! n_b ⟂ n, i.e. the value 1.
 double corner_value(const Vec3& to_next, const Vec3& to_prev, const Vec3& n) noexcept;
 
+//! Whether a face with outward (Newell) normal `face_normal` faces against the surface normal at
+//! π(barycentre): a fold-over (design.md §6; paper §6: fold-overs are what the energy must avoid).
+inline bool is_fold_over(const Vec3& face_normal, const Vec3& surface_normal) noexcept
+{
+    return face_normal.dot(surface_normal) < 0.0;
+}
+
 //! Fairing of a node p with ring p_1..p_k, from excess = k·p − Σ p_i (exact):
 //! ‖p − (1/k) Σ p_i‖² = ‖excess / k‖² in b0². A node without neighbours counts 0.
 double fairing_value(const LatticeSum& excess, int k) noexcept;

@@ -59,8 +59,9 @@ enum class Rejection : uint8_t
     Topology,      //!< any other manifold/genus safeguard
     Overflow,      //!< the change did not fit LocalChange's fixed capacity
     FoldedQuad,    //!< a quad whose diagonal is also a strut (two faces folded onto each other)
+    FoldOver,      //!< (from the energy's simulate) a new face facing against the surface
 };
-inline constexpr int kRejectionKinds = 12;
+inline constexpr int kRejectionKinds = 13;
 std::string_view rejection_name(Rejection r) noexcept;
 
 struct Proposal

@@ -49,6 +49,8 @@ PipelineOptions pipeline_options(const Args &args)
     a.threads = static_cast<int>(args.integer("--threads", 0, 0, 64));
     a.seed = static_cast<uint64_t>(args.integer("--seed", 1, 0, (1LL << 53)));
     a.target_nodes = static_cast<size_t>(args.integer("--target-nodes", 0, 4, 10000000));
+    a.initial_temperature = args.number("--t0", 0.0, 0.0, 1e6);
+    a.min_temperature = args.number("--t-min", a.min_temperature, 1e-12, 1e6);
     return o;
 }
 
@@ -108,7 +110,7 @@ int cmd_run(const CommandArgs &argv)
 {
     const Args args(argv,
                     {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
-                     "--stats"},
+                     "--stats", "--t0", "--t-min"},
                     {"--initial-only"});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");

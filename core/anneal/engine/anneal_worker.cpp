@@ -184,7 +184,8 @@ private:
         const EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change);
         if (!delta.ok())
         {
-            ++totals_.rejections[static_cast<size_t>(Rejection::Overflow)];
+            const Rejection why = delta.status == ChangeStatus::FoldOver ? Rejection::FoldOver : Rejection::Overflow;
+            ++totals_.rejections[static_cast<size_t>(why)];
             claims_->release_all();
             return;
         }

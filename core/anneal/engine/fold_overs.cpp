@@ -1,5 +1,7 @@
 #include "core/anneal/engine/fold_overs.h"
 
+#include "core/anneal/energy_samples.h"
+
 #include "core/mesh/circulators.h"
 #include "core/mesh/element_ranges.h"
 
@@ -25,7 +27,7 @@ size_t count_fold_overs(const ZomeMesh& mesh, const SurfaceContext& context)
         if (corners < 3)
             continue;
         const SurfaceSample s = context.sample(sum, corners);
-        if (newell.dot(s.normal) < 0.0)
+        if (is_fold_over(newell, s.normal))
             ++count;
     }
     return count;

@@ -52,6 +52,8 @@ std::string_view rejection_name(Rejection r) noexcept
         return "topology";
     case Rejection::FoldedQuad:
         return "folded quad";
+    case Rejection::FoldOver:
+        return "fold-over";
     case Rejection::Overflow:
         return "overflow";
     }
