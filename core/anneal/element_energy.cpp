@@ -15,7 +15,7 @@ StrutEnergy strut_energy(const ZVec& a, const ZVec& b, const SurfaceContext& con
     // a + b is exact and symmetric in a and b, so both orientations of a strut agree.
     LatticeSum twice_mid = lattice_sum(a);
     twice_mid += b;
-    const SurfaceSample mid = context.sample(twice_mid, 2);
+    const SurfaceSample mid = context.sample(twice_mid, 2, &a);
     StrutEnergy out;
     out.distance = quantize(distance_value(mid, options));
     out.tangential = quantize(tangential_value(difference(a, b), mid.normal));
@@ -40,7 +40,7 @@ FaceEnergy face_energy(std::span<const ZVec> corners, NodeNormals& normals, cons
         newell += lattice_sum(corners[i]).divided(1).cross(lattice_sum(corners[(i + 1) % k]).divided(1));
     }
     out.corners = static_cast<int>(k);
-    const SurfaceSample barycentre = normals.context().sample(sum, out.corners);
+    const SurfaceSample barycentre = normals.context().sample(sum, out.corners, &corners[0]);
     out.distance = quantize(distance_value(barycentre, options));
     out.fold_over = is_fold_over(newell, barycentre.normal);
     return out;
@@ -53,15 +53,17 @@ FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const
     // exact integer sum does not see.
     FaceEnergy out;
     LatticeSum sum;
+    const ZVec* first = nullptr;
     for (Halfedge h : face_halfedges(mesh, f))
     {
         const ZVec& at = mesh.position(mesh.to_vertex(h));
+        first = first ? first : &at;
         sum += at;
         out.normal += corner_energy(mesh.position(mesh.from_vertex(h)), at,
                                     mesh.position(mesh.to_vertex(mesh.next(h))), normals.at(at));
         ++out.corners;
     }
-    out.distance = quantize(distance_value(normals.context().sample(sum, out.corners), options));
+    out.distance = quantize(distance_value(normals.context().sample(sum, out.corners, first), options));
     return out;
 }
 

@@ -135,8 +135,7 @@ private:
         for (const NewFace& f : change_.added_faces())
         {
             const FaceEnergy fe = face_energy(f.view(), normals_, options_);
-            if (fe.fold_over)
-                out_.status = ChangeStatus::FoldOver;
+            out_.adds_fold_over = out_.adds_fold_over || fe.fold_over;
             d.distance += fe.distance;
             d.normal += fe.normal;
             d.corners += fe.corners;

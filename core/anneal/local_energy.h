@@ -26,8 +26,7 @@ enum class ChangeStatus : uint8_t
     Overflow,        //!< a list of the change (or the internal scratch) is full
     UnknownNode,     //!< an added strut ends at a position that is neither an added node nor a
                      //!< surviving node of the removed region
-    KeptStrutToRemovedNode, //!< a surviving node keeps a strut to a removed node
-    FoldOver                //!< an added face would face against the surface (a fold-over)
+    KeptStrutToRemovedNode //!< a surviving node keeps a strut to a removed node
 };
 
 //! The differences of the sums and counts (meaningful only when status is Ok).
@@ -35,12 +34,13 @@ struct EnergyDelta
 {
     EnergySums sums;
     ChangeStatus status = ChangeStatus::Ok;
+    //! An added face would face against the surface at its barycentre (is_fold_over). The sums are
+    //! still exact; the annealer refuses such a change.
+    bool adds_fold_over = false;
     bool ok() const noexcept { return status == ChangeStatus::Ok; }
 };
 
 //! What applying `change` to `mesh` would do to the energy's sums. Does not modify anything.
-//! A change that adds a fold-over face (is_fold_over) is refused with status FoldOver: no model
-//! the annealer commits gains a face turned against the surface.
 EnergyDelta simulate_change(const ZomeMesh& mesh, const LocalChange& change, const SurfaceContext& context,
                             const EnergyOptions& options) noexcept;
 

@@ -78,19 +78,22 @@ SurfaceContext::SurfaceContext(const SurfaceProjector& projector, const ModelTra
     inv_scale_squared_ = 1.0 / (scale_ * scale_);
 }
 
-SurfaceSample SurfaceContext::sample(const LatticeSum& sum, int divisor) const noexcept
+SurfaceSample SurfaceContext::sample(const LatticeSum& sum, int divisor, const ZVec* near) const noexcept
 {
     const Vec3 p = to_mesh(sum.divided(divisor));
     const uint64_t key = sum.key(divisor);
     ThreadSamples& mine = ThreadSamples::for_generation(generation_.load(std::memory_order_relaxed));
     if (const SurfaceSample* known = mine.find(key, p))
         return *known;
-    const ClosestPoint closest = cache_.project(key, p);
+    // The near node's own sample is almost always in this thread's table already.
+    const uint32_t hint = near ? node_sample(*near).triangle : ProjectionCache::kNoHint;
+    const ClosestPoint closest = cache_.project(key, p, hint);
     SurfaceSample out;
     // The transform is a uniform scale, so distances convert by 1/scale and normals not at all.
     out.distance_squared = closest.distance_squared * inv_scale_squared_;
     out.normal = closest.normal;
     out.inside = inside_.is_inside(p, closest);
+    out.triangle = closest.triangle;
     mine.put(key, p, out);
     return out;
 }

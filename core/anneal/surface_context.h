@@ -27,6 +27,7 @@ struct SurfaceSample
     double distance_squared = 0.0; //!< ‖p − π(p)‖² in b0² (mesh distance / transform scale, squared)
     Vec3 normal = Vec3::UnitZ();   //!< unit outward normal of S at π(p) (SurfaceProjector's)
     bool inside = false;           //!< p strictly inside S (InsideTest; points on S are outside)
+    uint32_t triangle = 0;         //!< the triangle of S that holds π(p)
 };
 
 //! Immutable after construction except for its cache, which is thread-safe: sample() may be called
@@ -40,8 +41,10 @@ public:
     SurfaceContext(const SurfaceContext&) = delete;
     SurfaceContext& operator=(const SurfaceContext&) = delete;
 
-    //! The sample at sum / divisor (Zome units).
-    SurfaceSample sample(const LatticeSum& sum, int divisor) const noexcept;
+    //! The sample at sum / divisor (Zome units). `near`: a node close to the sample (a corner of its
+    //! strut or face), whose projection then seeds the search when the sample is in no cache; the
+    //! value never depends on it.
+    SurfaceSample sample(const LatticeSum& sum, int divisor, const ZVec* near = nullptr) const noexcept;
     //! The sample at a node position.
     SurfaceSample node_sample(const ZVec& p) const noexcept { return sample(lattice_sum(p), 1); }
     //! Only the surface normal at π(p) of a node position (no inside test).

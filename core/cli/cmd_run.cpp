@@ -51,6 +51,8 @@ PipelineOptions pipeline_options(const Args &args)
     a.target_nodes = static_cast<size_t>(args.integer("--target-nodes", 0, 4, 10000000));
     a.initial_temperature = args.number("--t0", 0.0, 0.0, 1e6);
     a.min_temperature = args.number("--t-min", a.min_temperature, 1e-12, 1e6);
+    a.t0_spread_factor = args.number("--t0-factor", a.t0_spread_factor, 1e-6, 1e3);
+    a.min_temperature_ratio = args.number("--t-min-ratio", 0.0, 0.0, 0.999);
     return o;
 }
 
@@ -110,7 +112,7 @@ int cmd_run(const CommandArgs &argv)
 {
     const Args args(argv,
                     {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
-                     "--stats", "--t0", "--t-min"},
+                     "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio"},
                     {"--initial-only"});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");

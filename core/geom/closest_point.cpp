@@ -56,6 +56,14 @@ constexpr double kFloatRangeMin = 1e-15;
 // padding of the boxes); a margin of 1e-6 * magnitude covers that.
 constexpr double kBoxMargin = 1e-6;
 
+// The order of triangles as answers: by exact distance, then by index. Triangles that tie (a
+// closest point on a shared edge or vertex) are common; breaking ties by index makes the answer
+// a function of p alone, whatever the traversal order or the hint.
+inline bool closer_than(double distance, uint32_t id, double best, uint32_t best_id)
+{
+    return distance < best || (distance == best && id < best_id);
+}
+
 // Candidates held before they are measured exactly (then the buffer starts over).
 constexpr int kCandidates = 32;
 
@@ -176,10 +184,11 @@ ClosestPoint SurfaceProjector::project(const Vec3& p, uint32_t hint) const
     {
         return project(p);
     }
+    // Measured by the same kernel as the search's candidates, so that the hint and the search
+    // agree bit for bit on its distance and ties are broken alike (closer_than).
     const auto& tri = mesh_.triangles[hint];
-    double best =
-        closest_point_on_triangle(p, mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]])
-            .distance_squared;
+    double best = point_triangle_distance_squared(p, mesh_.positions[tri[0]], mesh_.positions[tri[1]],
+                                                  mesh_.positions[tri[2]]);
     uint32_t best_id = hint;
     search(p, best, best_id);
     return finish(p, best_id);
@@ -250,7 +259,7 @@ void SurfaceProjector::search(const Vec3& p, double& best, uint32_t& best_id) co
             }
             const SlotTriangle& t = slots_[candidates[i].slot];
             const double dist = point_triangle_distance_squared(p, t.a, t.b, t.c);
-            if (dist < best)
+            if (closer_than(dist, t.id, best, best_id))
             {
                 best = dist;
                 best_id = t.id;
@@ -388,7 +397,7 @@ void SurfaceProjector::search_all(const Vec3& p, double& best, uint32_t& best_id
         {
             const SlotTriangle& t = slots_[4 * leaf + lane];
             const double dist = point_triangle_distance_squared(p, t.a, t.b, t.c);
-            if (dist < best)
+            if (closer_than(dist, t.id, best, best_id))
             {
                 best = dist;
                 best_id = t.id;

@@ -53,11 +53,12 @@ public:
     explicit SurfaceProjector(TriangleMesh mesh, const BvhOptions& options = {});
 
     //! π(p) by nearest-first BVH traversal. Exact up to rounding: equal to the minimum over all
-    //! triangles (ties between triangles sharing π(p) may pick either).
+    //! triangles; among triangles at exactly the same distance (π(p) on a shared edge or vertex),
+    //! the lowest index. So the answer depends on p only.
     ClosestPoint project(const Vec3& p) const;
 
-    //! Same result, but starts from triangle `hint` (e.g. the answer for a nearby point), which
-    //! bounds the search from the first node on. An out-of-range hint is ignored.
+    //! The same answer, bit for bit, but starts from triangle `hint` (e.g. the answer for a nearby
+    //! point), which bounds the search from the first node on. An out-of-range hint is ignored.
     ClosestPoint project(const Vec3& p, uint32_t hint) const;
 
     const TriangleMesh& mesh() const { return mesh_; }

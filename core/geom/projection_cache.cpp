@@ -165,13 +165,13 @@ void ProjectionCache::insert(uint64_t key, const Vec3& p, const ClosestPoint& va
     shard.put(hash, key, p, value);
 }
 
-ClosestPoint ProjectionCache::project(uint64_t key, const Vec3& p)
+ClosestPoint ProjectionCache::project(uint64_t key, const Vec3& p, uint32_t hint)
 {
     if (std::optional<ClosestPoint> cached = lookup(key, p, true))
         return *cached;
     // Computed without holding the shard lock: two threads missing on the same point may both
     // compute it, which is cheaper than making every other thread of the shard wait.
-    const ClosestPoint value = projector_.project(p);
+    const ClosestPoint value = hint == kNoHint ? projector_.project(p) : projector_.project(p, hint);
     insert(key, p, value);
     return value;
 }

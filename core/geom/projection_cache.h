@@ -51,8 +51,10 @@ public:
     ProjectionCache(const ProjectionCache&) = delete;
     ProjectionCache& operator=(const ProjectionCache&) = delete;
 
-    //! π(p) from the cache, computed by the projector (outside any lock) and stored on a miss.
-    ClosestPoint project(uint64_t key, const Vec3& p);
+    static constexpr uint32_t kNoHint = ~uint32_t{0};
+    //! π(p) from the cache, computed by the projector (outside any lock) and stored on a miss;
+    //! `hint` (a triangle near π(p), e.g. a neighbour's) speeds up that search, never its answer.
+    ClosestPoint project(uint64_t key, const Vec3& p, uint32_t hint = kNoHint);
     //! The cached value for (key, p), if any.
     std::optional<ClosestPoint> find(uint64_t key, const Vec3& p);
     //! Stores `value` for (key, p), replacing what `key` held.

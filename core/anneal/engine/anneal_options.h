@@ -26,10 +26,14 @@ struct AnnealOptions
     //! Weights and forbidden zones (energy.target_nodes is overwritten by target_nodes / N0).
     EnergyOptions energy;
 
-    //! T0; 0 = 0.1 · stdev of ΔE over random valid proposals on the starting model (paper §5.3).
+    //! T0; 0 = t0_spread_factor · stdev of ΔE over random valid proposals on the starting model.
     double initial_temperature = 0.0;
-    //! T_min (paper: 1e-5).
+    //! The factor of the automatic T0 (paper §5.3: 0.1).
+    double t0_spread_factor = 0.1;
+    //! T_min (paper: 1e-5), used when min_temperature_ratio is 0.
     double min_temperature = 1e-5;
+    //! > 0: T_min = min_temperature_ratio · T0 instead.
+    double min_temperature_ratio = 0.0;
     //! Valid proposals sampled for T0.
     int t0_samples = 2000;
     //! Seconds between calls of the progress callback (and best-model snapshots).

@@ -182,9 +182,10 @@ private:
             return;
         }
         const EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change);
-        if (!delta.ok())
+        // No commit may add a face turned against the surface (no model gains a fold-over).
+        if (!delta.ok() || delta.adds_fold_over)
         {
-            const Rejection why = delta.status == ChangeStatus::FoldOver ? Rejection::FoldOver : Rejection::Overflow;
+            const Rejection why = delta.ok() ? Rejection::FoldOver : Rejection::Overflow;
             ++totals_.rejections[static_cast<size_t>(why)];
             claims_->release_all();
             return;

@@ -41,6 +41,10 @@ AnnealOptions resolve(AnnealOptions o, const ZomeMesh& mesh)
         throw InvalidInputError("threads must be between 0 (automatic) and 64");
     if (!(o.min_temperature > 0.0) || !std::isfinite(o.min_temperature))
         throw InvalidInputError("the minimum temperature must be positive");
+    if (!(o.min_temperature_ratio >= 0.0 && o.min_temperature_ratio < 1.0))
+        throw InvalidInputError("the minimum temperature ratio must be in [0, 1)");
+    if (!(o.t0_spread_factor > 0.0) || !std::isfinite(o.t0_spread_factor))
+        throw InvalidInputError("the T0 factor must be a positive number");
     if (!(o.initial_temperature >= 0.0) || !std::isfinite(o.initial_temperature))
         throw InvalidInputError("the initial temperature must be 0 (automatic) or positive");
     if (!(o.progress_interval > 0.0))
@@ -75,13 +79,13 @@ double estimate_t0(const AnnealerState& s, int& valid)
         if (propose(kind, s.mesh, seed, rng, claims, proposal))
         {
             const EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change);
-            if (delta.ok())
+            if (delta.ok() && !delta.adds_fold_over) // what the workers would consider
                 spread.add(s.energy.delta_energy(delta));
         }
         claims.release_all();
     }
     valid = spread.count();
-    return 0.1 * spread.stdev();
+    return s.options.t0_spread_factor * spread.stdev();
 }
 
 void add_counts(AnnealStats& into, const AnnealStats& from)
@@ -210,7 +214,9 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     const ModelTransform& transform = s.context.transform();
 
     const double t0 = s.options.initial_temperature > 0.0 ? s.options.initial_temperature : estimate_t0(s, s.t0_samples);
-    s.schedule = CoolingSchedule(t0, s.options.min_temperature);
+    const double t_min = s.options.min_temperature_ratio > 0.0 ? s.options.min_temperature_ratio * t0
+                                                               : s.options.min_temperature;
+    s.schedule = CoolingSchedule(t0, t_min);
     s.temperature.store(s.schedule.initial());
     {
         // progress() and snapshot() may already be called from other threads.
