@@ -102,7 +102,7 @@ struct VectorIndex
         }
     }
 
-    int find(const ZVec& v) const
+    int find(const ZVec& v) const noexcept
     {
         for (size_t b = ZVecHash{}(v) & (kBuckets - 1);; b = (b + 1) & (kBuckets - 1))
         {
@@ -115,7 +115,8 @@ struct VectorIndex
     }
 };
 
-const VectorIndex& vector_index()
+// Built once; an allocation failure there ends the program (noexcept), never a lookup.
+const VectorIndex& vector_index() noexcept
 {
     static const VectorIndex index;
     return index;
@@ -164,17 +165,17 @@ const StrutKindInfo& kind_info(StrutKind k)
     return infos[static_cast<size_t>(k)];
 }
 
-const ZVec& zome_vector(int id)
+const ZVec& zome_vector(int id) noexcept
 {
     return vector_index().vectors[static_cast<size_t>(id)];
 }
 
-const std::array<ZVec, kVectorCount>& zome_vectors()
+const std::array<ZVec, kVectorCount>& zome_vectors() noexcept
 {
     return vector_index().vectors;
 }
 
-int vector_id_of(const ZVec& v)
+int vector_id_of(const ZVec& v) noexcept
 {
     return vector_index().find(v);
 }

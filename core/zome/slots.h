@@ -70,15 +70,18 @@ struct StrutKindInfo
 const StrutKindInfo& kind_info(StrutKind k);
 std::string_view color_name(Color c);
 
+// noexcept: these are on the annealer's hot path, and under Emscripten's JS exceptions every call
+// to a function that may throw, from a noexcept caller, goes through a JS trampoline.
+
 //! The Zome vector with id 0..185 (slot·3 + size).
-const ZVec& zome_vector(int id);
+const ZVec& zome_vector(int id) noexcept;
 //! All 186 Zome vectors in id order.
-const std::array<ZVec, kVectorCount>& zome_vectors();
+const std::array<ZVec, kVectorCount>& zome_vectors() noexcept;
 
 //! The vector id of v, or -1 if v is not a Zome vector (exact, O(1)).
-int vector_id_of(const ZVec& v);
+int vector_id_of(const ZVec& v) noexcept;
 //! The slot of v (0..61), or -1 if v is not a Zome vector.
-inline int slot_of(const ZVec& v)
+inline int slot_of(const ZVec& v) noexcept
 {
     const int id = vector_id_of(v);
     return id < 0 ? -1 : vector_slot(id);

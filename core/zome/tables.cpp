@@ -4,7 +4,7 @@
 
 namespace zomeify {
 
-const ZomeTables& ZomeTables::get()
+const ZomeTables& ZomeTables::get() noexcept
 {
     static const ZomeTables tables;
     return tables;

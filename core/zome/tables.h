@@ -27,8 +27,9 @@ struct VecPair
 class ZomeTables
 {
 public:
-    //! The tables, built on first use (thread-safe) and shared.
-    static const ZomeTables& get();
+    //! The tables, built on first use (thread-safe) and shared; an allocation failure while
+    //! building them ends the program (noexcept keeps JS trampolines off the hot path in wasm).
+    static const ZomeTables& get() noexcept;
     //! A fresh, private copy (benchmarks measure construction with this).
     static std::unique_ptr<ZomeTables> build() { return std::unique_ptr<ZomeTables>(new ZomeTables()); }
 

@@ -6,9 +6,15 @@
 //   bench_anneal quality [S1 S2 THREADS]  the energy reached in S1 and in S2 seconds (default 30
 //                                         and 300, 2 threads), with energy-vs-time points
 //                                         (every 0.5 s) to plot
+//   bench_anneal seeding [PROPOSALS N]    the final energy with seeds from sweeping slabs and with
+//                                         seeds drawn uniformly (the paper's way), one thread, a
+//                                         budget of PROPOSALS (default 2e7), seeds 1..N (default 3):
+//                                         deterministic runs, so the load of the machine does not
+//                                         matter
 //
 // CPU time is reported beside wall time because the machine may be shared: proposals per CPU
 // second do not drop when another process takes a core, proposals per wall second do.
+#include <algorithm>
 #include <ctime>
 #include <iostream>
 #include <string>
@@ -128,6 +134,35 @@ nlohmann::json quality_run(const Scene& s, double seconds, int threads)
             {"curve", curve}};
 }
 
+nlohmann::json seeding(const Scene& s, uint64_t proposals, int seeds)
+{
+    nlohmann::json out;
+    for (const bool sweep : {true, false})
+    {
+        nlohmann::json energies = nlohmann::json::array();
+        std::vector<double> values;
+        for (int seed = 1; seed <= seeds; ++seed)
+        {
+            const SurfaceContext context(*s.projector, s.z0.transform);
+            AnnealOptions o;
+            o.threads = 1;
+            o.max_proposals = proposals;
+            o.seed = static_cast<uint64_t>(seed);
+            o.target_nodes = kTargetNodes;
+            o.sweep_slabs = sweep;
+            Annealer annealer(s.z0, context, o);
+            const AnnealResult r = annealer.run();
+            energies.push_back(r.end.total);
+            values.push_back(r.end.total);
+        }
+        std::sort(values.begin(), values.end());
+        out[sweep ? "sweeping_slabs" : "uniform"] = {{"energies", energies},
+                                                     {"median", values[values.size() / 2]}};
+    }
+    out["proposals"] = proposals;
+    return out;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -152,6 +187,13 @@ int main(int argc, char** argv)
         const double e1 = j["short"]["energy_end"]["total"].get<double>();
         const double e2 = j["long"]["energy_end"]["total"].get<double>();
         j["short_over_long"] = e2 > 0 ? e1 / e2 : 0.0;
+    }
+    else if (mode == "seeding")
+    {
+        const double proposals = argc > 2 ? std::atof(argv[2]) : 2e7;
+        const int seeds = argc > 3 ? std::atoi(argv[3]) : 3;
+        j["mode"] = "seeding";
+        j["seeding"] = seeding(s, static_cast<uint64_t>(std::max(proposals, 1.0)), std::max(seeds, 1));
     }
     else
     {

@@ -46,7 +46,7 @@ invocations() {
     esac
   else
     case "$1" in
-      bench_anneal) echo throughput 5 ;;
+      bench_anneal) echo throughput 5; echo quality 30 300 2; echo "native: seeding 20000000 3" ;;
       bench_quality) echo --seconds 30 ;;
       *) echo ;;
     esac
@@ -65,11 +65,13 @@ run_one() { # run_one PLATFORM BENCH ARGS COMMAND...
 }
 for bench in "${benches[@]}"; do
   while IFS= read -r line; do
+    # "native: ARGS": deterministic results that wasm would only repeat, slower.
+    native_only=0; [[ "$line" == native:* ]] && { native_only=1; line=${line#native: }; }
     read -ra args <<<"$line"
     exe="$native_dir/tests/bench/$bench"
     if [ -x "$exe" ]; then run_one native "$bench" "$line" "$exe" "${args[@]}"; fi
     js="$wasm_dir/tests/bench/$bench.js"
-    if [ $wasm = 1 ] && [ -f "$js" ]; then
+    if [ $wasm = 1 ] && [ $native_only = 0 ] && [ -f "$js" ]; then
       run_one wasm "$bench" "$line" node --no-experimental-fetch "$js" "${args[@]}"
     fi
   done < <(invocations "$bench")

@@ -36,6 +36,9 @@ struct AnnealOptions
     double min_temperature_ratio = 0.0;
     //! Valid proposals sampled for T0.
     int t0_samples = 2000;
+    //! Seeds from sweeping slabs (seed_slabs.h); false: uniformly over all nodes, as the paper
+    //! (kept for comparison: bench_anneal seeding).
+    bool sweep_slabs = true;
     //! Seconds between calls of the progress callback (and best-model snapshots).
     double progress_interval = 0.25;
 };

@@ -102,14 +102,18 @@ private:
         slab_epoch_ = kNoEpoch;
     }
 
-    // With several threads, the seeds of this thread's slab for the current epoch (seed_slabs.h).
+    // The seeds of this thread's slab for the current epoch (seed_slabs.h). With one thread the
+    // proposal count is exact at every checkpoint, so the epochs, and the run, are deterministic.
     void refresh_slab(uint64_t proposals_done)
     {
-        const uint64_t epoch = proposals_done / kSlabEpochProposals;
-        if (!shared_ || epoch == slab_epoch_)
+        const uint64_t epoch = proposals_done / s_.slabs.epoch_proposals;
+        if (epoch == slab_epoch_ || !s_.options.sweep_slabs)
             return;
-        std::lock_guard lock(s_.commit_mutex);
-        seeds_ = seed_slab(s_.mesh, epoch, index_, s_.options.threads);
+        std::unique_lock lock(s_.commit_mutex, std::defer_lock);
+        if (shared_)
+            lock.lock(); // the mesh is read whole
+        const int slab = slab_of_thread(epoch, index_, s_.options.threads, s_.slabs.slabs);
+        seeds_ = seed_slab(s_.mesh, epoch, slab, s_.slabs.slabs);
         slab_epoch_ = epoch;
     }
 

@@ -217,6 +217,7 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     const double t_min = s.options.min_temperature_ratio > 0.0 ? s.options.min_temperature_ratio * t0
                                                                : s.options.min_temperature;
     s.schedule = CoolingSchedule(t0, t_min);
+    s.slabs = slab_plan(s.mesh.n_vertices(), s.options.threads);
     s.temperature.store(s.schedule.initial());
     {
         // progress() and snapshot() may already be called from other threads.

@@ -13,6 +13,7 @@
 #include "core/anneal/engine/anneal_stats.h"
 #include "core/anneal/engine/pause_barrier.h"
 #include "core/anneal/engine/schedule.h"
+#include "core/anneal/engine/seed_slabs.h"
 #include "core/anneal/node_claims.h"
 #include "core/anneal/surface_context.h"
 #include "core/base/stopwatch.h"
@@ -47,6 +48,7 @@ struct AnnealerState
     EnergyState energy;  // sums: commit lock
     EnergyTerms start_terms;
     CoolingSchedule schedule{0.0, 0.0};
+    SlabPlan slabs; // set before the workers start
     int t0_samples = 0;
 
     mutable std::mutex commit_mutex;
