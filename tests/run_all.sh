@@ -2,13 +2,14 @@
 # Every test of the project (the README's test command, `npm test`, calls this):
 #   1. native build (warnings as errors) + ctest: GoogleTest suite, CLI contract, fuzz regression corpus
 #   2. wasm build + ctest: the same GoogleTest binary and the CLI under node
+#   2b. JS unit tests of the page (web/tests/run.sh, node --test; no browser)
 #   3. AddressSanitizer + UBSan build + the whole GoogleTest suite and the fuzz regression corpus
 #   4. ThreadSanitizer build + the tests labelled `parallel` (ctest -L parallel)
 #   5. libFuzzer smoke run: every fuzz target for ZOME_FUZZ_SECONDS (default 15) seconds
 #   6. e2e/run.sh (Playwright in Chromium) when it exists
 # Ends with one line "tests: N passed, M failed" summing the ctest counts, one per fuzz target and the
 # e2e count. For local use, lanes can be skipped: ZOME_SKIP_WASM=1, ZOME_SKIP_ASAN=1, ZOME_SKIP_TSAN=1,
-# ZOME_SKIP_FUZZ=1, ZOME_SKIP_E2E=1; ZOME_SKIP_SANITIZERS=1 skips lanes 3-5.
+# ZOME_SKIP_FUZZ=1, ZOME_SKIP_E2E=1, ZOME_SKIP_JS=1; ZOME_SKIP_SANITIZERS=1 skips lanes 3-5.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 total_pass=0; total_fail=0; status=0
@@ -53,6 +54,12 @@ run_ctest build/native
 if ! skip ZOME_SKIP_WASM; then
   bash tests/build.sh wasm || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }
   run_ctest build/wasm
+fi
+if [ -f web/tests/run.sh ] && ! skip ZOME_SKIP_JS; then
+  log=$(mktemp)
+  bash web/tests/run.sh 2>&1 | tee "$log"
+  count_summary "$log" tests
+  rm -f "$log"
 fi
 if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_ASAN; then
   bash tests/build.sh asan || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }

@@ -46,7 +46,7 @@ invocations() {
     esac
   else
     case "$1" in
-      bench_anneal) echo throughput 5; echo quality 30 300 2; echo "native: seeding 20000000 3" ;;
+      bench_anneal) echo throughput 5; echo "native: quality 30 300 2"; echo "native: seeding 20000000 3" ;;
       bench_quality) echo --seconds 30 ;;
       *) echo ;;
     esac
@@ -65,7 +65,7 @@ run_one() { # run_one PLATFORM BENCH ARGS COMMAND...
 }
 for bench in "${benches[@]}"; do
   while IFS= read -r line; do
-    # "native: ARGS": deterministic results that wasm would only repeat, slower.
+    # "native: ARGS": long runs (time to quality, seeding) run natively only; a wasm twin would double the time.
     native_only=0; [[ "$line" == native:* ]] && { native_only=1; line=${line#native: }; }
     read -ra args <<<"$line"
     exe="$native_dir/tests/bench/$bench"

@@ -2,7 +2,8 @@
 # Runs each fuzz target for SECONDS (all targets when none is named), one at a time, at low priority.
 #   tests/fuzz/run.sh SECONDS [TARGET...]       targets: obj stl ply off gltf glb vef zome_json share_link
 # Environment: FUZZ_RUNS=N also stops a target after N executions; FUZZ_NICE (default 15);
-# FUZZ_RSS_MB (default 2048); FUZZ_TIMEOUT seconds per input before it counts as a hang (default 10).
+# FUZZ_RSS_MB (default 2048); FUZZ_TIMEOUT seconds per input before it counts as a hang (default 10);
+# FUZZ_RESULTS another results file (so that two runs of this script on different targets can share the machine).
 # Builds the targets in build/asan if needed (tests/build.sh fuzz), generates seeds from ../shared into build/fuzz/seeds, keeps each target's
 # growing corpus in build/fuzz/corpus/<target>, findings in build/fuzz/findings/<target>/, one line
 # per target in build/fuzz/results.tsv, and ends with "fuzz: N passed, M failed" (a target passes
@@ -36,7 +37,8 @@ max_len() { # inputs larger than this are cut: small inputs mutate and run faste
 }
 
 passed=0; failed=0
-printf 'target\tseconds\texecutions\texec_per_s\tpeak_rss_mb\tcorpus\tresult\n' > "$dir/results.tsv"
+results=${FUZZ_RESULTS:-$dir/results.tsv}
+printf 'target\tseconds\texecutions\texec_per_s\tpeak_rss_mb\tcorpus\tresult\n' > "$results"
 for t in "${targets[@]}"; do
   exe="$bin/fuzz_$t"
   [ -x "$exe" ] || { echo "fuzz: unknown target '$t'" >&2; failed=$((failed + 1)); continue; }
@@ -60,7 +62,7 @@ for t in "${targets[@]}"; do
     failed=$((failed + 1))
   fi
   printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$t" "$elapsed" "${execs:-?}" "${rate:-?}" "${rss:-?}" "$corpus" "$result" |
-    tee -a "$dir/results.tsv"
+    tee -a "$results"
 done
 echo "fuzz: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]
