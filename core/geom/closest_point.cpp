@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/base/errors.h"
+#include "core/base/portable_math.h"
 #include "core/geom/triangle_estimate.h"
 
 namespace zomeify {
@@ -40,10 +41,11 @@ TriangleMesh validated(TriangleMesh mesh)
 }
 
 // Angle between two edge vectors; atan2 stays accurate for angles near 0 and pi, where acos of a
-// dot product would not.
+// dot product would not. The portable one: libm's atan2 differs in the last bit between glibc and
+// musl, and these angles weight the vertex normals the energy reads.
 double corner_angle(const Vec3& e1, const Vec3& e2)
 {
-    return std::atan2(e1.cross(e2).norm(), e1.dot(e2));
+    return portable_angle(e1.cross(e2).norm(), e1.dot(e2));
 }
 
 // Queries are done in float relative to the BVH origin while the magnitude (largest coordinate
