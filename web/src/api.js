@@ -1,9 +1,11 @@
 // window.zomeify: a small scripting API over the page (documented in web/README.md). Every call
 // returns a promise; failures reject with the same one-line message the page shows.
-export function installApi(app, { ready, info }) {
+export function installApi(app, { ready, warmedUp, info }) {
   const api = {
     /** Resolves with {threaded, maxThreads, crossOriginIsolated} once the first model is shown. */
     ready,
+    /** Resolves (with its milliseconds, or null) once the start-up warm-up run has finished. */
+    warmedUp,
     info,
     /** A File (or {name, bytes: ArrayBuffer|Uint8Array}); {run: true} starts a run afterwards. */
     async load(file, options = {}) {

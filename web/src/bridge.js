@@ -58,6 +58,7 @@ export class CoreBridge {
   estimate(resolution) { return this.request(Request.ESTIMATE, { resolution }); }
   run(options) { return this.request(Request.RUN, { options }); }
   cancel() { return this.request(Request.CANCEL); }
+  warmUp() { return this.request(Request.WARM_UP); }
   snapshot() { return this.request(Request.SNAPSHOT); }
   surface() { return this.request(Request.SURFACE); }
   parts() { return this.request(Request.PARTS); }

@@ -29,7 +29,7 @@ let resolveReady, rejectReady;
 const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });
 ready.catch(() => {});
 const info = { crossOriginIsolated: self.crossOriginIsolated === true, threaded: false, maxThreads: 1 };
-installApi(app, { ready, info });
+installApi(app, { ready, warmedUp: () => booted.then(() => info.warmUpMs, () => null), info });
 
 bridge.on(Event.FATAL, ({ error }) => {
   status.error(`The core could not start: ${error}`);
@@ -87,9 +87,14 @@ async function boot() {
   info.firstModelMs ??= performance.now();
   info.readyMs = performance.now();
   resolveReady({ ...info });
+  // After the first model is up: compile the annealer now rather than in the user's first run.
+  const warm = await bridge.warmUp().catch((e) => ({ error: e.message }));
+  info.warmUpMs = warm.ms ?? null;
+  if (warm.error) console.warn(`warm-up failed: ${warm.error}`);
 }
 
-boot().catch((e) => {
+const booted = boot();
+booted.catch((e) => {
   status.error(`The page could not start: ${e.message}`);
   rejectReady(e);
 });

@@ -17,6 +17,7 @@ export const Request = Object.freeze({
   EXPORT: 'export',       // {name}                          → {name, bytes: Uint8Array}
   LINK: 'link',           // {}                              → {link: 'm=1.…'}
   SUMMARY: 'summary',     // {}                              → Summary
+  WARM_UP: 'warmUp',      // {}                              → {ms}  (a short hidden run; see core_worker.js)
 });
 
 /** Events (worker → page). */
