@@ -1,6 +1,7 @@
 // zomeify run MESH -o OUT [...] (design.md §5): the whole pipeline (run_pipeline: Z0, then the
 // annealer) with a one-paragraph summary on stdout, progress on stderr when it is a terminal,
 // and the --stats object.
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -33,6 +34,32 @@ std::string file_name(const std::string &path)
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
+// "--operator-weights 1,1,1,1,1,1,1": seven non-negative integers in OperatorKind order.
+std::array<uint32_t, 7> operator_weights(const std::string &text)
+{
+    std::array<uint32_t, 7> w{};
+    size_t k = 0, i = 0;
+    while (k < w.size())
+    {
+        size_t j = i;
+        uint64_t v = 0;
+        while (j < text.size() && j - i < 6 && text[j] >= '0' && text[j] <= '9')
+            v = v * 10 + static_cast<uint64_t>(text[j++] - '0');
+        const bool last = k + 1 == w.size();
+        if (j == i || (last ? j != text.size() : (j >= text.size() || text[j] != ',')))
+            throw InvalidInputError("--operator-weights wants 7 integers 0-999999 separated by commas, got '" + text +
+                                    "'");
+        w[k++] = static_cast<uint32_t>(v);
+        i = j + 1;
+    }
+    uint64_t total = 0;
+    for (uint32_t x : w)
+        total += x;
+    if (total == 0)
+        throw InvalidInputError("--operator-weights: at least one weight must be positive");
+    return w;
+}
+
 PipelineOptions pipeline_options(const Args &args)
 {
     PipelineOptions o;
@@ -53,6 +80,8 @@ PipelineOptions pipeline_options(const Args &args)
     a.min_temperature = args.number("--t-min", a.min_temperature, 1e-12, 1e6);
     a.t0_spread_factor = args.number("--t0-factor", a.t0_spread_factor, 1e-6, 1e3);
     a.min_temperature_ratio = args.number("--t-min-ratio", 0.0, 0.0, 0.999);
+    if (args.has("--operator-weights"))
+        a.operator_weights = operator_weights(*args.value("--operator-weights"));
     return o;
 }
 
@@ -112,7 +141,7 @@ int cmd_run(const CommandArgs &argv)
 {
     const Args args(argv,
                     {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
-                     "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio"},
+                     "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights"},
                     {"--initial-only"});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");

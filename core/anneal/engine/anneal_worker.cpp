@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/anneal/engine/annealer_state.h"
+#include "core/anneal/engine/operator_draw.h"
 #include "core/anneal/engine/seed_slabs.h"
 #include "core/anneal/proposal.h"
 
@@ -52,7 +53,8 @@ public:
     Worker(AnnealerState& state, int index, WorkerTotals& totals, const std::function<void()>& report)
         : s_(state), index_(index), totals_(totals.stats), report_(report),
           rng_(Rng::for_stream(state.options.seed, static_cast<uint64_t>(index))),
-          shared_(state.options.threads > 1), by_proposals_(state.options.max_proposals > 0)
+          shared_(state.options.threads > 1), by_proposals_(state.options.max_proposals > 0),
+          operators_(state.options.operator_weights)
     {
         make_claims();
     }
@@ -174,7 +176,7 @@ private:
             claims_->release_all();
             return;
         }
-        const auto kind = static_cast<OperatorKind>(rng_.below(kOperatorKinds));
+        const OperatorKind kind = operators_.draw(rng_);
         OperatorCounts& counts = totals_.per_operator[static_cast<size_t>(kind)];
         ++counts.proposed;
         ++own_proposals_;
@@ -250,6 +252,7 @@ private:
     const std::function<void()>& report_;
     Rng rng_;
     const bool shared_, by_proposals_;
+    const OperatorDraw operators_;
     std::optional<Claims> claims_;
     uint64_t tags_generation_ = 0;
     Proposal proposal_;
