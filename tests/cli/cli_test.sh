@@ -69,6 +69,9 @@ expect_error "run both scales"  'not both'               run "$mesh" --resolutio
 expect_error "run bad seconds"  'seconds'                run "$mesh" --seconds -1 -o "$tmp/x.zome.json"
 expect_error "run bad threads"  'threads'                run "$mesh" --threads 1000 -o "$tmp/x.zome.json"
 expect_output "run paper draw"  'on 1 thread: .*genus 0' run "$mesh" --resolution 8 --proposals 20000 --threads 1 --operator-weights 1,1,1,1,1,1,1 -o "$tmp/d.zome.json"
+"${cli[@]}" run "$mesh" --resolution 8 --proposals 5000 --threads 1 --operator-weights 0,0,0,0,0,1,0 -o "$tmp/e.zome.json" --stats "$tmp/e.json" >/dev/null 2>&1
+if tr -d ' \n' < "$tmp/e.json" | grep -Eq '"INSNODE":\{"accepted":0,"proposed":0,' \
+   && tr -d ' \n' < "$tmp/e.json" | grep -Eq '"proposed":5000,'; then ok; else bad "run --operator-weights not applied"; fi
 expect_error "run bad weights"  'operator-weights wants 7' run "$mesh" --operator-weights 1,2,3 -o "$tmp/x.zome.json"
 expect_error "run junk weights" 'operator-weights wants 7' run "$mesh" --operator-weights 1,1,1,1,1,1,x -o "$tmp/x.zome.json"
 expect_error "run zero weights" 'at least one weight'    run "$mesh" --operator-weights 0,0,0,0,0,0,0 -o "$tmp/x.zome.json"

@@ -90,6 +90,28 @@ TEST(Annealer, RunKeepsEveryInvariantAndExactSums)
     EXPECT_EQ(model_energy(r.model, *scene.context, o.energy, 392).sums, r.end.sums);
 }
 
+TEST(Annealer, OperatorWeightsDecideWhatIsProposed)
+{
+    // Only MOVNODE and REMDIAG, 3 to 1: the workers draw with the options' weights.
+    const test::AnnealScene& scene = bunny8();
+    AnnealOptions o = deterministic_options(8000);
+    o.operator_weights = {0, 0, 0, 1, 0, 3, 0};
+    Annealer annealer(scene.z0, *scene.context, o);
+    const AnnealResult r = annealer.run();
+    for (int k = 0; k < kOperatorKinds; ++k)
+    {
+        const auto kind = static_cast<OperatorKind>(k);
+        if (kind != OperatorKind::MovNode && kind != OperatorKind::RemDiag)
+        {
+            EXPECT_EQ(r.stats.per_operator[k].proposed, 0u) << operator_name(kind);
+        }
+    }
+    const double movnode = static_cast<double>(r.stats.per_operator[static_cast<size_t>(OperatorKind::MovNode)].proposed);
+    EXPECT_NEAR(movnode / static_cast<double>(r.stats.proposals), 0.75, 0.03);
+    const ValidationReport report = validate(from_model(r.model));
+    EXPECT_TRUE(report.ok()) << report.message();
+}
+
 TEST(Annealer, CancelInProgressStopsAndKeepsAValidBestModel)
 {
     const test::AnnealScene& scene = bunny8();
