@@ -77,9 +77,13 @@ PipelineOptions pipeline_options(const Args &args)
     a.seed = static_cast<uint64_t>(args.integer("--seed", 1, 0, (1LL << 53)));
     a.target_nodes = static_cast<size_t>(args.integer("--target-nodes", 0, 4, 10000000));
     a.initial_temperature = args.number("--t0", 0.0, 0.0, 1e6);
+    if (args.has("--t-min") && args.has("--t-min-ratio"))
+        throw InvalidInputError("give either --t-min or --t-min-ratio, not both");
     a.min_temperature = args.number("--t-min", a.min_temperature, 1e-12, 1e6);
     a.t0_spread_factor = args.number("--t0-factor", a.t0_spread_factor, 1e-6, 1e3);
-    a.min_temperature_ratio = args.number("--t-min-ratio", 0.0, 0.0, 0.999);
+    // An absolute --t-min replaces the default ratio.
+    a.min_temperature_ratio =
+        args.has("--t-min") ? 0.0 : args.number("--t-min-ratio", a.min_temperature_ratio, 0.0, 0.999);
     if (args.has("--operator-weights"))
         a.operator_weights = operator_weights(*args.value("--operator-weights"));
     return o;

@@ -76,6 +76,15 @@ expect_error "run bad weights"  'operator-weights wants 7' run "$mesh" --operato
 expect_error "run junk weights" 'operator-weights wants 7' run "$mesh" --operator-weights 1,1,1,1,1,1,x -o "$tmp/x.zome.json"
 expect_error "run zero weights" 'at least one weight'    run "$mesh" --operator-weights 0,0,0,0,0,0,0 -o "$tmp/x.zome.json"
 expect_error "run missing mesh" 'cannot open'            run "$tmp/missing.obj" -o "$tmp/x.zome.json"
+expect_error "run both t-mins"  'not both'               run "$mesh" --t-min 1e-4 --t-min-ratio 0.01 -o "$tmp/x.zome.json"
+# --t-min-ratio R: T_min = R·T0; an absolute --t-min (default 1e-5) otherwise.
+"${cli[@]}" run "$mesh" --resolution 8 --proposals 2000 --threads 1 --t-min-ratio 0.01 -o "$tmp/f.zome.json" --stats "$tmp/f.json" >/dev/null 2>&1
+"${cli[@]}" run "$mesh" --resolution 8 --proposals 2000 --threads 1 --t-min 2e-5 -o "$tmp/g.zome.json" --stats "$tmp/g.json" >/dev/null 2>&1
+if node -e '
+  const a = JSON.parse(require("fs").readFileSync(process.argv[1])).anneal;
+  const b = JSON.parse(require("fs").readFileSync(process.argv[2])).anneal;
+  const ok = Math.abs(a.min_temperature / (0.01 * a.initial_temperature) - 1) < 1e-12 && b.min_temperature === 2e-5;
+  process.exit(ok ? 0 : 1);' "$tmp/f.json" "$tmp/g.json"; then ok; else bad "run --t-min-ratio or --t-min not applied"; fi
 
 printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/nonzome.vef"
 head -c 700 "$bunny" > "$tmp/truncated.vef"
