@@ -18,8 +18,8 @@ bool NodeTags::try_take(Vertex v, uint32_t owner) noexcept
 void NodeTags::release(Vertex v, uint32_t owner) noexcept
 {
     if (v.idx() >= capacity_) return;
-    // Only the owner releases, so a plain store does (no locked instruction: half the claims'
-    // cost on x86). release: our commit's writes are published to the next owner.
+    // Only the owner releases, so a plain store does (no locked instruction on x86).
+    // release: our commit's writes are published to the next owner.
     if (owners_[v.idx()].word.load(std::memory_order_relaxed) == owner)
         owners_[v.idx()].word.store(0, std::memory_order_release);
 }

@@ -81,7 +81,7 @@ PipelineOptions pipeline_options(const Args &args)
         throw InvalidInputError("give either --t-min or --t-min-ratio, not both");
     a.min_temperature = args.number("--t-min", a.min_temperature, 1e-12, 1e6);
     a.t0_spread_factor = args.number("--t0-factor", a.t0_spread_factor, 1e-6, 1e3);
-    // An absolute --t-min replaces the default ratio.
+    // An absolute --t-min overrides whatever ratio the options default to.
     a.min_temperature_ratio =
         args.has("--t-min") ? 0.0 : args.number("--t-min-ratio", a.min_temperature_ratio, 0.0, 0.999);
     if (args.has("--operator-weights"))
