@@ -10,6 +10,15 @@ endif()
 add_compile_options(-fexceptions)
 add_link_options(-fexceptions)
 
+# Link-time optimisation: clang otherwise inlines nothing across source files, and the annealer's
+# hot path crosses several (sample → cache → projector, simulate → energy terms). Measured on the
+# bunny (2·10^6 proposals, one thread, pinned): 5.29 s against 5.74 s without, native 4.00 s; the
+# same flag on the native GCC build changed nothing measurable, so it is set here only.
+if(NOT CMAKE_BUILD_TYPE STREQUAL "Debug")
+  add_compile_options(-flto)
+  add_link_options(-flto)
+endif()
+
 # emcmake injects "node --experimental-wasm-threads", which node 20 rejects; 3.1.6 also needs
 # --no-experimental-fetch under node 20 (toolchain.md).
 find_program(NODE_EXE node REQUIRED NO_CMAKE_FIND_ROOT_PATH)

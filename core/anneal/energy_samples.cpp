@@ -4,20 +4,6 @@
 
 namespace zomeify {
 
-EnergyFixed quantize(double value) noexcept
-{
-    // `!(value < cap)` also catches NaN, which would otherwise make llround undefined.
-    if (!(value < kEnergySampleCap))
-    {
-        value = kEnergySampleCap;
-    }
-    if (!(value > 0.0))
-    {
-        return 0;
-    }
-    return static_cast<EnergyFixed>(std::llround(value / kEnergyQuantum));
-}
-
 double forbidden_zone(double d, const ForbiddenZone& zone) noexcept
 {
     if (d <= zone.d_min)

@@ -1,6 +1,8 @@
 // The energy terms on configurations whose values are known in closed form (paper §4, design §3.3).
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -205,6 +207,26 @@ TEST(EnergyTerms, QuantizationIsExactEnoughAndClamped)
     EXPECT_EQ(quantize(1e300), quantize(kEnergySampleCap));
     EXPECT_EQ(quantize(std::nan("")), quantize(kEnergySampleCap));
     EXPECT_NEAR(static_cast<double>(quantize(0.123456789)) * kEnergyQuantum, 0.123456789, kEnergyQuantum);
+}
+
+TEST(EnergyTerms, QuantizationRoundsLikeLlround)
+{
+    // The inline rounding must give llround's integer for every value, halves included, or
+    // stored goldens and native/wasm determinism would break.
+    std::vector<double> values = {0.5 * kEnergyQuantum, 1.5 * kEnergyQuantum, 2.5 * kEnergyQuantum,
+                                  std::nextafter(0.5 * kEnergyQuantum, 0.0), 0x1p20 + 0.5 * kEnergyQuantum,
+                                  std::nextafter(kEnergySampleCap, 0.0), 1e-300};
+    uint64_t state = 12345;
+    for (int i = 0; i < 100000; ++i)
+    {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        const double unit = static_cast<double>(state >> 11) * 0x1p-53;
+        values.push_back(std::ldexp(unit, static_cast<int>(state % 90) - 60));
+    }
+    for (const double v : values)
+    {
+        ASSERT_EQ(quantize(v), static_cast<EnergyFixed>(std::llround(v / kEnergyQuantum))) << v;
+    }
 }
 
 } // namespace

@@ -158,7 +158,10 @@ private:
         return true;
     }
 
-    void step()
+    // Not inlined into run(): V8 moves a wasm function to its optimising compiler only for later
+    // calls (no on-stack replacement), and run() is called once per thread, so whatever it
+    // inlines would stay in the baseline tier for the whole run. step() is called per proposal.
+    __attribute__((noinline)) void step()
     {
         const uint32_t published = s_.published_vertices.load(std::memory_order_acquire);
         if (published == 0)
