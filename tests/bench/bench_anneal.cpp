@@ -165,7 +165,7 @@ nlohmann::json seeding(const Scene& s, uint64_t proposals, int seeds)
 
 } // namespace
 
-int main(int argc, char** argv)
+static int run_bench(int argc, char** argv)
 {
     const std::string mode = argc > 1 ? argv[1] : "throughput";
     const Scene s = bunny();
@@ -206,3 +206,5 @@ int main(int argc, char** argv)
     std::cout << j.dump(2) << "\n";
     return 0;
 }
+
+int main(int argc, char** argv) { return zomeify::bench::guarded_main(argc, argv, run_bench); }

@@ -96,7 +96,7 @@ double per_thread_rate(int threads, const EnergyState& state, const ZomeMesh& me
 
 } // namespace
 
-int main(int argc, char** argv)
+static int run_bench(int argc, char** argv)
 {
     const std::string name = argc > 1 ? argv[1] : "bunny.obj";
     const size_t target = argc > 2 ? static_cast<size_t>(std::atol(argv[2])) : 400;
@@ -189,3 +189,5 @@ int main(int argc, char** argv)
     std::cout << out.dump() << std::endl;
     return 0;
 }
+
+int main(int argc, char** argv) { return zomeify::bench::guarded_main(argc, argv, run_bench); }

@@ -59,7 +59,7 @@ nlohmann::json bench_mesh(const std::string &name, int runs)
 
 } // namespace
 
-int main(int argc, char **argv)
+static int run_bench(int argc, char** argv)
 {
     int runs = 5;
     std::vector<std::string> names;
@@ -86,3 +86,5 @@ int main(int argc, char **argv)
     std::cout << out.dump() << std::endl;
     return 0;
 }
+
+int main(int argc, char** argv) { return zomeify::bench::guarded_main(argc, argv, run_bench); }

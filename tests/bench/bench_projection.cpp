@@ -202,7 +202,7 @@ nlohmann::json bench_mesh(const std::string& name)
 
 } // namespace
 
-int main(int argc, char** argv)
+static int run_bench(int argc, char** argv)
 {
     std::vector<std::string> names;
     for (int i = 1; i < argc; ++i)
@@ -242,3 +242,5 @@ int main(int argc, char** argv)
     std::cout << out.dump() << std::endl;
     return 0;
 }
+
+int main(int argc, char** argv) { return zomeify::bench::guarded_main(argc, argv, run_bench); }

@@ -63,7 +63,7 @@ nlohmann::json curve(const std::string &name, double seconds, int threads)
 
 } // namespace
 
-int main(int argc, char **argv)
+static int run_bench(int argc, char** argv)
 {
     double seconds = 20.0;
     int threads = 2;
@@ -93,3 +93,5 @@ int main(int argc, char **argv)
     std::cout << out.dump() << std::endl;
     return 0;
 }
+
+int main(int argc, char** argv) { return zomeify::bench::guarded_main(argc, argv, run_bench); }

@@ -4,6 +4,8 @@
 //! the platform name, so each benchmark prints one comparable JSON object.
 
 #include <algorithm>
+#include <exception>
+#include <iostream>
 #include <functional>
 #include <string>
 #include <vector>
@@ -52,6 +54,21 @@ inline std::string platform()
 #else
     return "native";
 #endif
+}
+
+//! Runs a benchmark's body and turns an exception (a missing mesh, a bad argument) into one line
+//! on stderr and exit code 2, instead of std::terminate.
+inline int guarded_main(int argc, char** argv, int (*body)(int, char**))
+{
+    try
+    {
+        return body(argc, argv);
+    }
+    catch (const std::exception& e)
+    {
+        std::cerr << argv[0] << ": error: " << e.what() << "\n";
+        return 2;
+    }
 }
 
 } // namespace zomeify::bench

@@ -21,7 +21,7 @@
 
 using namespace zomeify;
 
-int main(int argc, char **argv)
+static int run_bench(int argc, char** argv)
 {
     constexpr int kRuns = 5;
     const std::string mesh_name = argc > 1 ? argv[1] : "rockerarm.obj";
@@ -77,3 +77,5 @@ int main(int argc, char **argv)
     std::cout << j.dump() << "\n";
     return 0;
 }
+
+int main(int argc, char** argv) { return zomeify::bench::guarded_main(argc, argv, run_bench); }
