@@ -178,9 +178,9 @@ static int run_bench(int argc, char** argv)
     j["target_nodes"] = kTargetNodes;
     if (mode == "quality")
     {
-        const double s1 = argc > 2 ? std::atof(argv[2]) : 30.0;
-        const double s2 = argc > 3 ? std::atof(argv[3]) : 300.0;
-        const int threads = argc > 4 ? std::atoi(argv[4]) : 2;
+        const double s1 = argc > 2 ? bench::positive_argument(argv[2], "S1") : 30.0;
+        const double s2 = argc > 3 ? bench::positive_argument(argv[3], "S2") : 300.0;
+        const int threads = argc > 4 ? static_cast<int>(bench::positive_argument(argv[4], "THREADS")) : 2;
         j["mode"] = "quality";
         j["short"] = quality_run(s, s1, threads);
         j["long"] = quality_run(s, s2, threads);
@@ -190,14 +190,17 @@ static int run_bench(int argc, char** argv)
     }
     else if (mode == "seeding")
     {
-        const double proposals = argc > 2 ? std::atof(argv[2]) : 2e7;
-        const int seeds = argc > 3 ? std::atoi(argv[3]) : 3;
+        const double proposals = argc > 2 ? bench::positive_argument(argv[2], "PROPOSALS") : 2e7;
+        const int seeds = argc > 3 ? static_cast<int>(bench::positive_argument(argv[3], "N")) : 3;
         j["mode"] = "seeding";
         j["seeding"] = seeding(s, static_cast<uint64_t>(std::max(proposals, 1.0)), std::max(seeds, 1));
     }
     else
     {
-        const double seconds = mode == "throughput" ? (argc > 2 ? std::atof(argv[2]) : 5.0) : std::atof(argv[1]);
+        // `bench_anneal throughput [SECONDS]` or `bench_anneal SECONDS`; anything else is an error.
+        const double seconds = mode == "throughput"
+                                   ? (argc > 2 ? bench::positive_argument(argv[2], "SECONDS") : 5.0)
+                                   : bench::positive_argument(argv[1], "the mode (throughput, quality, seeding) or SECONDS");
         j["mode"] = "throughput";
         j["seconds_per_run"] = seconds;
         j["runs"] = throughput(s, seconds > 0 ? seconds : 5.0);

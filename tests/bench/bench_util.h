@@ -4,6 +4,9 @@
 //! the platform name, so each benchmark prints one comparable JSON object.
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <stdexcept>
 #include <exception>
 #include <iostream>
 #include <functional>
@@ -54,6 +57,18 @@ inline std::string platform()
 #else
     return "native";
 #endif
+}
+
+//! A command-line number that must be positive and finite ("what" names it in the error).
+inline double positive_argument(const char* text, const char* what)
+{
+    char* end = nullptr;
+    const double x = std::strtod(text, &end);
+    if (end == text || *end != '\0' || !std::isfinite(x) || !(x > 0.0))
+    {
+        throw std::invalid_argument(std::string(what) + " must be a positive number, not '" + text + "'");
+    }
+    return x;
 }
 
 //! Runs a benchmark's body and turns an exception (a missing mesh, a bad argument) into one line
