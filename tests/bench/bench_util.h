@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <stdexcept>
 #include <exception>
-#include <iostream>
 #include <functional>
+#include <iostream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -59,7 +59,8 @@ inline std::string platform()
 #endif
 }
 
-//! A command-line number that must be positive and finite ("what" names it in the error).
+//! A positional command-line number that must be positive and finite ("what" names it in the
+//! error); the CLI's Args::number does the same for named options.
 inline double positive_argument(const char* text, const char* what)
 {
     char* end = nullptr;
