@@ -60,8 +60,9 @@ enum class Rejection : uint8_t
     Overflow,      //!< the change did not fit LocalChange's fixed capacity
     FoldedQuad,    //!< a quad whose diagonal is also a strut (two faces folded onto each other)
     FoldOver,      //!< (from the energy's simulate) a new face facing against the surface
+    Uncovered,     //!< (at commit, after Metropolis) would leave a part of S with no node near (coverage_guard.h)
 };
-inline constexpr int kRejectionKinds = 13;
+inline constexpr int kRejectionKinds = 14;
 std::string_view rejection_name(Rejection r) noexcept;
 
 struct Proposal

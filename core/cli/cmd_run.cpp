@@ -84,6 +84,7 @@ PipelineOptions pipeline_options(const Args &args)
     // An absolute --t-min overrides whatever ratio the options default to.
     a.min_temperature_ratio =
         args.has("--t-min") ? 0.0 : args.number("--t-min-ratio", a.min_temperature_ratio, 0.0, 0.999);
+    a.coverage.radius = args.number("--coverage-radius", a.coverage.radius, 0.0, 1e3);
     if (args.has("--operator-weights"))
         a.operator_weights = operator_weights(*args.value("--operator-weights"));
     return o;
@@ -145,7 +146,7 @@ int cmd_run(const CommandArgs &argv)
 {
     const Args args(argv,
                     {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
-                     "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights"},
+                     "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius"},
                     {"--initial-only"});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");

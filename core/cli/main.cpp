@@ -19,7 +19,7 @@ const std::vector<Command>& commands()
         {"score", "score MODEL --mesh MESH [--b0 L] [--json]  energy, fold-overs and distance of a model against a mesh", cmd_score},
         {"run", "run MESH -o OUT [-o OUT2 ...] [--resolution N | --b1 L] [--target-nodes N] [--seconds S | --proposals N]\n"
                 "          [--threads T] [--seed K] [--t0 T | --t0-factor F] [--t-min T | --t-min-ratio R]\n"
-                "          [--operator-weights I,A,S,R,F,M,N] [--initial-only] [--stats STATS.json]   Z0, then annealing",
+                "          [--operator-weights I,A,S,R,F,M,N] [--coverage-radius B0S] [--initial-only] [--stats STATS.json]   Z0, then annealing",
          cmd_run},
     };
     return list;

@@ -61,6 +61,11 @@ nlohmann::json anneal_json(const AnnealResult& a)
             {"dead_seeds", s.dead_seeds},
             {"lost_races", s.lost_races},
             {"garbage_collections", s.garbage_collections},
+            {"coverage",
+             {{"radius_b0", s.coverage_radius},
+              {"samples", s.coverage_samples},
+              {"uncovered_at_start", s.uncovered_at_start},
+              {"uncovered_at_end", s.uncovered_at_end}}},
             {"energy_sums_consistent", s.energy_consistent},
             {"best_energy", a.best.total}};
 }

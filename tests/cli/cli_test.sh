@@ -85,6 +85,14 @@ if node -e '
   const b = JSON.parse(require("fs").readFileSync(process.argv[2])).anneal;
   const ok = Math.abs(a.min_temperature / (0.01 * a.initial_temperature) - 1) < 1e-12 && b.min_temperature === 2e-5;
   process.exit(ok ? 0 : 1);' "$tmp/f.json" "$tmp/g.json"; then ok; else bad "run --t-min-ratio or --t-min not applied"; fi
+expect_error "run bad coverage" 'coverage-radius'        run "$mesh" --coverage-radius -1 -o "$tmp/x.zome.json"
+# --coverage-radius: 0 turns the guard off; the stats say what it held.
+"${cli[@]}" run "$mesh" --resolution 8 --proposals 2000 --threads 1 --coverage-radius 0 -o "$tmp/h.zome.json" --stats "$tmp/h.json" >/dev/null 2>&1
+if node -e '
+  const a = JSON.parse(require("fs").readFileSync(process.argv[1])).anneal.coverage;
+  const f = JSON.parse(require("fs").readFileSync(process.argv[2])).anneal.coverage;
+  const ok = a.radius_b0 === 0 && a.samples === 0 && f.radius_b0 === 2.5 && f.samples > 500 && f.uncovered_at_end <= f.samples;
+  process.exit(ok ? 0 : 1);' "$tmp/h.json" "$tmp/f.json"; then ok; else bad "run --coverage-radius not applied or not reported"; fi
 
 printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/nonzome.vef"
 head -c 700 "$bunny" > "$tmp/truncated.vef"

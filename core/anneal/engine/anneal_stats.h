@@ -50,6 +50,10 @@ struct AnnealStats
     uint64_t dead_seeds = 0;          //!< seed draws that hit a deleted node slot
     uint64_t lost_races = 0;          //!< accepted proposals dropped at commit (position taken meanwhile)
     uint64_t garbage_collections = 0; //!< synchronized pauses to compact and grow the mesh
+    //! The coverage guard (coverage_guard.h): its radius (0: off), samples on S, and how many of
+    //! them had no node within the radius at the start and at the end.
+    double coverage_radius = 0.0;
+    size_t coverage_samples = 0, uncovered_at_start = 0, uncovered_at_end = 0;
     //! After the run the incremental sums equalled a fresh evaluation, bit for bit.
     bool energy_consistent = false;
 };

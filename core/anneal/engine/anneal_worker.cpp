@@ -230,6 +230,12 @@ private:
             ++totals_.lost_races;
             return false;
         }
+        // Last, because admitting updates the coverage counts as if the change were applied.
+        if (!s_.coverage.admit(s_.mesh, proposal_.change))
+        {
+            ++totals_.rejections[static_cast<size_t>(Rejection::Uncovered)];
+            return false;
+        }
         apply_proposal(s_.mesh, proposal_);
         s_.energy.commit(delta);
         s_.published_vertices.store(static_cast<uint32_t>(s_.mesh.vertices_size()), std::memory_order_release);

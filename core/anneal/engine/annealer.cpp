@@ -60,7 +60,7 @@ AnnealOptions resolve(AnnealOptions o, const ZomeMesh& mesh)
     return o;
 }
 
-// T0 = 0.1 · stdev(ΔE) over random valid proposals on the starting mesh (paper §5.3). One
+// T0 = t0_spread_factor · stdev(ΔE) over random valid proposals on the starting mesh (paper §5.3). One
 // thread, its own random stream: deterministic in the seed.
 double estimate_t0(const AnnealerState& s, int& valid)
 {
@@ -106,8 +106,9 @@ void add_counts(AnnealStats& into, const AnnealStats& from)
 
 AnnealerState::AnnealerState(ZomeMesh start, const SurfaceContext& ctx, const AnnealOptions& opts)
     : context(ctx), options(resolve(opts, start)), mesh(std::move(start)), energy(mesh, ctx, options.energy),
-      start_terms(energy.terms()), barrier(options.threads)
+      coverage(ctx, mesh, options.coverage), start_terms(energy.terms()), barrier(options.threads)
 {
+    uncovered_at_start = coverage.uncovered();
     best_energy = start_terms.total;
 }
 
@@ -296,6 +297,10 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     st.t0_valid_samples = s.t0_samples;
     st.cancelled = s.cancelled.load();
     st.garbage_collections = s.barrier.pauses();
+    st.coverage_radius = s.coverage.enabled() ? s.options.coverage.radius : 0.0;
+    st.coverage_samples = s.coverage.sample_count();
+    st.uncovered_at_start = s.uncovered_at_start;
+    st.uncovered_at_end = s.coverage.uncovered();
     st.energy_consistent = EnergyState(s.mesh, s.context, s.options.energy).sums() == s.energy.sums();
     if (progress)
     {

@@ -12,7 +12,8 @@
 //!
 //! Cooling: T(x) = T0 · (T_min/T0)^x with x ∈ [0, 1] the used fraction of the budget (seconds,
 //! or proposals when max_proposals > 0), so T reaches T_min exactly when the budget ends. T0 =
-//! 0.1 · stdev(ΔE) over random valid proposals on the starting model.
+//! t0_spread_factor (0.03; the paper's 0.1) · stdev(ΔE) over random valid proposals on the
+//! starting model, T_min = T0/120 by default (anneal_options.h).
 //!
 //! Thread safety: run() on one thread; cancel(), progress() and snapshot() from any thread at
 //! any time (they take the commit lock for a few microseconds; the workers keep going).

@@ -46,6 +46,8 @@ struct AnnealerState
 
     ZomeMesh mesh;       // written under the commit lock (or with all workers parked)
     EnergyState energy;  // sums: commit lock
+    CoverageGuard coverage; // commit lock
+    size_t uncovered_at_start = 0;
     EnergyTerms start_terms;
     CoolingSchedule schedule{0.0, 0.0};
     SlabPlan slabs; // set before the workers start

@@ -36,7 +36,7 @@ private:
 //! u uniform in [0, 1). T ≤ 0 accepts only ΔE ≤ 0. NaN ΔE is rejected.
 bool metropolis_accept(double delta_energy, double temperature, double u) noexcept;
 
-//! 0.1 · stdev of the sampled ΔE (paper §5.3's T0) from running sums, computed by Welford's
+//! The stdev of the sampled ΔE (T0 is a factor of it, paper §5.3) from running sums, computed by Welford's
 //! method in the order the samples came.
 class DeltaSpread
 {

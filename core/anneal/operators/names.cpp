@@ -54,6 +54,8 @@ std::string_view rejection_name(Rejection r) noexcept
         return "folded quad";
     case Rejection::FoldOver:
         return "fold-over";
+    case Rejection::Uncovered:
+        return "uncovers surface";
     case Rejection::Overflow:
         return "overflow";
     }
