@@ -35,6 +35,8 @@ public:
     virtual void resize(size_t n) = 0;
     //! Appends one entry holding the default value.
     virtual void push_back() = 0;
+    //! Sets entry i back to the default value (a recycled slot).
+    virtual void reset(size_t i) = 0;
     //! Keeps entries kept[0], kept[1], ... (strictly increasing old indices) as the new 0, 1, ...
     virtual void compact(const std::vector<MeshIndex>& kept) = 0;
     virtual std::unique_ptr<BasePropertyArray> clone() const = 0;
@@ -60,6 +62,7 @@ public:
     void reserve(size_t n) override { data_.reserve(n); }
     void resize(size_t n) override { data_.resize(n, default_); }
     void push_back() override { data_.push_back(default_); }
+    void reset(size_t i) override { data_[i] = default_; }
     void compact(const std::vector<MeshIndex>& kept) override
     {
         for (size_t i = 0; i < kept.size(); ++i)
@@ -195,6 +198,12 @@ public:
         for (auto& a : arrays_)
             a->push_back();
         ++size_;
+    }
+    //! Every array's entry i back to its default (a recycled element slot).
+    void reset(size_t i)
+    {
+        for (auto& a : arrays_)
+            a->reset(i);
     }
     void compact(const std::vector<MeshIndex>& kept)
     {

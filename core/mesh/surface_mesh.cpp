@@ -55,7 +55,8 @@ SurfaceMesh::SurfaceMesh()
 SurfaceMesh::SurfaceMesh(const SurfaceMesh& other)
     : vprops_(other.vprops_), hprops_(other.hprops_), eprops_(other.eprops_), fprops_(other.fprops_),
       deleted_vertices_(other.deleted_vertices_), deleted_edges_(other.deleted_edges_),
-      deleted_faces_(other.deleted_faces_)
+      deleted_faces_(other.deleted_faces_), slot_reuse_(other.slot_reuse_), free_edges_(other.free_edges_),
+      free_faces_(other.free_faces_)
 {
     bind_builtin_properties();
 }
@@ -71,6 +72,9 @@ SurfaceMesh& SurfaceMesh::operator=(const SurfaceMesh& other)
     deleted_vertices_ = other.deleted_vertices_;
     deleted_edges_ = other.deleted_edges_;
     deleted_faces_ = other.deleted_faces_;
+    slot_reuse_ = other.slot_reuse_;
+    free_edges_ = other.free_edges_;
+    free_faces_ = other.free_faces_;
     bind_builtin_properties();
     return *this;
 }
@@ -174,12 +178,52 @@ Vertex SurfaceMesh::add_vertex()
     return v;
 }
 
+void SurfaceMesh::set_slot_reuse(bool on)
+{
+    slot_reuse_ = on;
+    if (!on)
+    {
+        free_edges_.clear();
+        free_faces_.clear();
+    }
+}
+
+void SurfaceMesh::free_edge_slot(Edge e)
+{
+    edeleted_[e] = 1;
+    ++deleted_edges_;
+    if (slot_reuse_)
+        free_edges_.push_back(e.idx());
+}
+
+void SurfaceMesh::free_face_slot(Face f)
+{
+    fdeleted_[f] = 1;
+    ++deleted_faces_;
+    if (slot_reuse_)
+        free_faces_.push_back(f.idx());
+}
+
 Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b)
 {
-    eprops_.push_back();
-    hprops_.push_back();
-    hprops_.push_back();
-    const Edge e(static_cast<MeshIndex>(edges_size() - 1));
+    Edge e;
+    if (!free_edges_.empty())
+    {
+        // Every property back to its default, the deleted flag included.
+        e = Edge(free_edges_.back());
+        free_edges_.pop_back();
+        eprops_.reset(e.idx());
+        hprops_.reset(2 * static_cast<size_t>(e.idx()));
+        hprops_.reset(2 * static_cast<size_t>(e.idx()) + 1);
+        --deleted_edges_;
+    }
+    else
+    {
+        eprops_.push_back();
+        hprops_.push_back();
+        hprops_.push_back();
+        e = Edge(static_cast<MeshIndex>(edges_size() - 1));
+    }
     const Halfedge h = halfedge(e, 0);
     links_[h] = HalfedgeLinks{b, Halfedge(), Halfedge(), Face()};
     links_[opposite(h)] = HalfedgeLinks{a, Halfedge(), Halfedge(), Face()};
@@ -191,6 +235,14 @@ Halfedge SurfaceMesh::new_edge(Vertex a, Vertex b)
 
 Face SurfaceMesh::new_face()
 {
+    if (!free_faces_.empty())
+    {
+        const Face f(free_faces_.back());
+        free_faces_.pop_back();
+        fprops_.reset(f.idx());
+        --deleted_faces_;
+        return f;
+    }
     fprops_.push_back();
     return Face(static_cast<MeshIndex>(faces_size() - 1));
 }
@@ -414,8 +466,7 @@ void SurfaceMesh::remove_boundary_edge(Edge e)
         if (vout_[vo] == h)
             vout_[vo] = d;
     }
-    edeleted_[e] = 1;
-    ++deleted_edges_;
+    free_edge_slot(e);
 }
 
 void SurfaceMesh::remove_face(Face f)
@@ -435,8 +486,7 @@ void SurfaceMesh::remove_face(Face f)
         links_[h].face = Face();
         h = next(h);
     } while (h != start);
-    fdeleted_[f] = 1;
-    ++deleted_faces_;
+    free_face_slot(f);
     for (Halfedge x : hs)
         if (is_boundary(opposite(x)))
             remove_boundary_edge(edge(x));
@@ -584,10 +634,8 @@ Face SurfaceMesh::remove_edge(Edge e)
     if (vout_[vo] == h)
         vout_[vo] = d;
     fhalf_[fh] = a;
-    fdeleted_[fo] = 1;
-    ++deleted_faces_;
-    edeleted_[e] = 1;
-    ++deleted_edges_;
+    free_face_slot(fo);
+    free_edge_slot(e);
     if (observer_)
         observer_->face_added(fh);
     return fh;
@@ -743,6 +791,8 @@ void SurfaceMesh::garbage_collection(GarbageMap* map)
     for (Halfedge& h : fhalf_.vector())
         h = remap_h(h);
     deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
+    free_edges_.clear();
+    free_faces_.clear();
     on_compacted();
     if (observer_)
         observer_->compacted(m);
@@ -755,6 +805,8 @@ void SurfaceMesh::clear()
     eprops_.resize(0);
     fprops_.resize(0);
     deleted_vertices_ = deleted_edges_ = deleted_faces_ = 0;
+    free_edges_.clear();
+    free_faces_.clear();
     on_compacted();
 }
 

@@ -281,6 +281,13 @@ public:
     void set_halfedge(Face f, Halfedge h) { fhalf_[f] = h; }
     //!@}
 
+    //! On: an edge or face slot deleted since the last garbage_collection() is filled again by the
+    //! next new edge or face, instead of appending (deleted vertex slots are never refilled). For
+    //! the annealer: a commit's new faces then take the slots of the faces it removed, so the
+    //! elements of one region stay where they were instead of being appended, side by side with
+    //! another thread's. Off by default: indices of new elements are then always the highest.
+    void set_slot_reuse(bool on);
+
 protected:
     //! Called after a new edge (both halfedges linked to their vertices) is appended.
     virtual void on_edge_added(Edge) {}
@@ -315,6 +322,8 @@ private:
     }
     void bind_builtin_properties();
     void add_builtin_properties();
+    void free_edge_slot(Edge e);
+    void free_face_slot(Face f);
     // Points v's outgoing halfedge at a boundary one if v has any (the invariant is_boundary uses).
     void adjust_outgoing_halfedge(Vertex v);
     // Unlinks one edge whose two sides are both boundary and flags it deleted.
@@ -329,6 +338,8 @@ private:
     EdgeProperty<uint8_t> edeleted_;
     FaceProperty<uint8_t> fdeleted_;
     size_t deleted_vertices_ = 0, deleted_edges_ = 0, deleted_faces_ = 0;
+    bool slot_reuse_ = false;
+    std::vector<MeshIndex> free_edges_, free_faces_; // deleted slots to refill (slot_reuse_)
     MeshObserver* observer_ = nullptr;
 };
 

@@ -181,6 +181,66 @@ TEST(MeshSurface, RemoveFacesAndRefill)
     }
 }
 
+// With slot reuse on, refilling the removed faces takes their slots (and their struts' slots)
+// again: the arrays do not grow, the counts stay exact, a user property starts from its default.
+TEST(MeshSurface, SlotReuseRefillsDeletedSlots)
+{
+    std::mt19937 rng(778);
+    for (const auto& fx : fixtures::closed_models())
+    {
+        SCOPED_TRACE(fx.name);
+        ZomeMesh mesh = from_model(fx.model);
+        mesh.set_slot_reuse(true);
+        auto tag = mesh.add_face_property<int>("f:tag", -1);
+        for (Face f : faces(mesh))
+            tag[f] = 5;
+        const size_t faces_size = mesh.faces_size(), edges_size = mesh.edges_size();
+        std::vector<size_t> order(fx.model.faces.size());
+        for (size_t i = 0; i < order.size(); ++i)
+            order[i] = i;
+        std::shuffle(order.begin(), order.end(), rng);
+        order.resize(order.size() / 2);
+        for (size_t i : order)
+            mesh.remove_face(Face(static_cast<MeshIndex>(i)));
+        ASSERT_TRUE(mesh.has_garbage());
+        std::shuffle(order.begin(), order.end(), rng);
+        for (size_t i : order)
+        {
+            const Face f = mesh.add_face(corners(fx.model.faces[i]));
+            ASSERT_TRUE(f.is_valid());
+            EXPECT_LT(f.idx(), faces_size) << "appended instead of reusing a slot";
+            EXPECT_EQ(tag[f], -1) << "a reused slot kept an old property value";
+        }
+        EXPECT_EQ(mesh.faces_size(), faces_size);
+        EXPECT_EQ(mesh.edges_size(), edges_size);
+        EXPECT_FALSE(mesh.has_garbage());
+        ASSERT_TRUE(test::is_valid(mesh));
+        EXPECT_EQ(validate(mesh).genus, fx.genus);
+        EXPECT_EQ(mesh.n_faces(), fx.model.faces.size());
+        EXPECT_EQ(mesh.n_edges(), fx.model.struts.size());
+        // Every strut got its Zome vector again (ZomeMesh's on_edge_added on a reused slot).
+        for (Halfedge h : halfedges(mesh))
+            ASSERT_EQ(static_cast<int>(mesh.vector_id(h)), vector_id_of(mesh.vector(h)));
+    }
+}
+
+// Off (the default), new elements always append; a slot freed before switching on is not refilled
+// after garbage collection either (the lists start over).
+TEST(MeshSurface, SlotReuseOffAppends)
+{
+    ZomeMesh mesh = from_model(fixtures::icosahedron());
+    const std::vector<uint32_t> face = fixtures::icosahedron().faces[3];
+    mesh.remove_face(Face(3));
+    const Face f = mesh.add_face(corners(face));
+    EXPECT_EQ(f.idx(), 20u);
+    mesh.set_slot_reuse(true);
+    mesh.remove_face(f);
+    mesh.garbage_collection();
+    const Face g = mesh.add_face(corners(face));
+    EXPECT_EQ(g.idx(), mesh.faces_size() - 1);
+    ASSERT_TRUE(test::is_valid(mesh));
+}
+
 TEST(MeshSurface, RemoveVertexLeavesItsLinkAsAHole)
 {
     ZomeMesh mesh = from_model(fixtures::icosahedron());

@@ -109,6 +109,9 @@ AnnealerState::AnnealerState(ZomeMesh start, const SurfaceContext& ctx, const An
       coverage(ctx, mesh, options.coverage), start_terms(energy.terms()), barrier(options.threads)
 {
     uncovered_at_start = coverage.uncovered();
+    // A commit's new struts and faces take the slots its removed ones left, so a region's
+    // elements stay together instead of being appended beside the other threads' (SurfaceMesh).
+    mesh.set_slot_reuse(true);
     best_energy = start_terms.total;
 }
 
