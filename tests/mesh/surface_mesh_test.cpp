@@ -25,6 +25,17 @@ std::vector<Vertex> corners(const std::vector<uint32_t>& face)
     return out;
 }
 
+// A random half of 0 .. n-1, in random order.
+std::vector<size_t> random_half(size_t n, std::mt19937& rng)
+{
+    std::vector<size_t> order(n);
+    for (size_t i = 0; i < n; ++i)
+        order[i] = i;
+    std::shuffle(order.begin(), order.end(), rng);
+    order.resize(n / 2);
+    return order;
+}
+
 } // namespace
 
 TEST(MeshHandles, TypedIndices)
@@ -160,11 +171,7 @@ TEST(MeshSurface, RemoveFacesAndRefill)
         SCOPED_TRACE(fx.name);
         ZomeMesh mesh = from_model(fx.model);
         // Remove a random half of the faces, one by one, then put them back in another order.
-        std::vector<size_t> order(fx.model.faces.size());
-        for (size_t i = 0; i < order.size(); ++i)
-            order[i] = i;
-        std::shuffle(order.begin(), order.end(), rng);
-        order.resize(order.size() / 2);
+        std::vector<size_t> order = random_half(fx.model.faces.size(), rng);
         for (size_t i : order)
         {
             mesh.remove_face(Face(static_cast<MeshIndex>(i)));
@@ -195,11 +202,7 @@ TEST(MeshSurface, SlotReuseRefillsDeletedSlots)
         for (Face f : faces(mesh))
             tag[f] = 5;
         const size_t faces_size = mesh.faces_size(), edges_size = mesh.edges_size();
-        std::vector<size_t> order(fx.model.faces.size());
-        for (size_t i = 0; i < order.size(); ++i)
-            order[i] = i;
-        std::shuffle(order.begin(), order.end(), rng);
-        order.resize(order.size() / 2);
+        std::vector<size_t> order = random_half(fx.model.faces.size(), rng);
         for (size_t i : order)
             mesh.remove_face(Face(static_cast<MeshIndex>(i)));
         ASSERT_TRUE(mesh.has_garbage());
