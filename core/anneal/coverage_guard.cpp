@@ -95,8 +95,6 @@ CoverageGuard::CoverageGuard(const SurfaceContext& ctx, const ZomeMesh& start, c
     pending_.assign(samples_.size(), 0);
 }
 
-CoverageGuard::CellKey CoverageGuard::key_of(int64_t x, int64_t y, int64_t z) const noexcept { return pack(x, y, z); }
-
 template <typename F>
 void CoverageGuard::for_samples_near(const Vec3& p, F&& f) const
 {
@@ -105,7 +103,7 @@ void CoverageGuard::for_samples_near(const Vec3& p, F&& f) const
         for (int64_t y = cy - 1; y <= cy + 1; ++y)
             for (int64_t z = cz - 1; z <= cz + 1; ++z)
             {
-                const auto it = cells_.find(key_of(x, y, z));
+                const auto it = cells_.find(pack(x, y, z));
                 if (it == cells_.end())
                     continue;
                 for (uint32_t i = it->second.begin; i < it->second.end; ++i)

@@ -54,8 +54,6 @@ private:
     {
         uint32_t begin, end; // range in samples_
     };
-    using CellKey = uint64_t;
-    CellKey key_of(int64_t x, int64_t y, int64_t z) const noexcept;
     //! Calls f(sample index) for every sample within the radius of p (Zome units).
     template <typename F>
     void for_samples_near(const Vec3& p, F&& f) const;
@@ -64,7 +62,7 @@ private:
     double radius_ = 0.0;
     double radius_squared_ = 0.0;
     std::vector<Vec3> samples_; // sorted by cell
-    std::unordered_map<CellKey, Cell> cells_;
+    std::unordered_map<uint64_t, Cell> cells_; // packed cell coordinates → samples
     std::vector<uint32_t> counts_;
     std::vector<int32_t> pending_; // net change of a commit under test, zero between calls
     std::vector<uint32_t> touched_;
