@@ -16,6 +16,7 @@
 #include "core/anneal/engine/seed_slabs.h"
 #include "core/anneal/node_claims.h"
 #include "core/anneal/surface_context.h"
+#include "core/base/spin_lock.h"
 #include "core/base/stopwatch.h"
 #include "core/mesh/zome_mesh.h"
 #include "core/zome/model.h"
@@ -53,7 +54,7 @@ struct AnnealerState
     SlabPlan slabs; // set before the workers start
     int t0_samples = 0;
 
-    mutable std::mutex commit_mutex;
+    mutable CommitLock commit_mutex; // core/base/spin_lock.h
     std::unique_ptr<NodeTags> tags; // replaced only while every worker is parked
     uint64_t tags_generation = 0;   // bumped when tags is replaced
     //! vertices_size() of the mesh as last published: seeds are drawn below it, so a worker
