@@ -1,5 +1,5 @@
 // One annealing thread (annealer.h explains the step). The only shared writes happen in the
-// commit section (under commit_mutex) or while every other worker is parked in the barrier.
+// commit section (under commit_lock) or while every other worker is parked in the barrier.
 #include <exception>
 #include <functional>
 #include <optional>
@@ -94,7 +94,7 @@ private:
         flush();
         claims_->release_all();
         s_.barrier.arrive(s_.stop, [this] {
-            std::lock_guard lock(s_.commit_mutex);
+            std::lock_guard lock(s_.commit_lock);
             s_.make_room();
         });
         if (tags_generation_ != s_.tags_generation)
@@ -111,7 +111,7 @@ private:
         const uint64_t epoch = proposals_done / s_.slabs.epoch_proposals;
         if (epoch == slab_epoch_ || !s_.options.sweep_slabs)
             return;
-        std::unique_lock lock(s_.commit_mutex, std::defer_lock);
+        std::unique_lock lock(s_.commit_lock, std::defer_lock);
         if (shared_)
             lock.lock(); // the mesh is read whole
         const int slab = slab_of_thread(epoch, index_, s_.options.threads, s_.slabs.slabs);
@@ -214,7 +214,7 @@ private:
 
     bool commit(const EnergyDelta& delta, double u)
     {
-        std::lock_guard lock(s_.commit_mutex);
+        std::lock_guard lock(s_.commit_lock);
         if (!metropolis_accept(s_.energy.delta_energy(delta), temperature_, u))
             return false;
         const Additions add = additions(proposal_.change);
@@ -280,7 +280,7 @@ void run_worker(AnnealerState& state, int index, WorkerTotals& totals, const std
 {
     const auto fail = [&state](const char* what) {
         {
-            std::lock_guard lock(state.commit_mutex);
+            std::lock_guard lock(state.commit_lock);
             if (state.error.empty())
                 state.error = what;
         }
@@ -301,7 +301,7 @@ void run_worker(AnnealerState& state, int index, WorkerTotals& totals, const std
     }
     // Leave in every case, so the others are never left waiting at the barrier.
     state.barrier.leave([&state] {
-        std::lock_guard lock(state.commit_mutex);
+        std::lock_guard lock(state.commit_lock);
         state.make_room();
     });
 }

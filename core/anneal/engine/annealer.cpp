@@ -196,13 +196,13 @@ void Annealer::cancel() noexcept
 
 AnnealProgress Annealer::progress() const
 {
-    std::lock_guard lock(impl_->state.commit_mutex);
+    std::lock_guard lock(impl_->state.commit_lock);
     return impl_->state.progress_locked();
 }
 
 ZomeModel Annealer::snapshot() const
 {
-    std::lock_guard lock(impl_->state.commit_mutex);
+    std::lock_guard lock(impl_->state.commit_lock);
     return to_model(impl_->state.mesh, impl_->state.context.transform());
 }
 
@@ -225,7 +225,7 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     s.temperature.store(s.schedule.initial());
     {
         // progress() and snapshot() may already be called from other threads.
-        std::lock_guard lock(s.commit_mutex);
+        std::lock_guard lock(s.commit_lock);
         s.make_room();
         impl_->best_model = to_model(s.mesh, transform);
         s.clock.restart();
@@ -235,7 +235,7 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     const std::function<void()> report = [this, &s, &progress, &transform] {
         AnnealProgress p;
         {
-            std::lock_guard lock(s.commit_mutex);
+            std::lock_guard lock(s.commit_lock);
             p = s.progress_locked();
             if (p.energy.total < s.best_energy)
             {
@@ -307,7 +307,7 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     st.energy_consistent = EnergyState(s.mesh, s.context, s.options.energy).sums() == s.energy.sums();
     if (progress)
     {
-        std::lock_guard lock(s.commit_mutex);
+        std::lock_guard lock(s.commit_lock);
         AnnealProgress p = s.progress_locked();
         p.best_energy = result.best.total;
         progress(p);

@@ -1,7 +1,7 @@
 #pragma once
 //! \file annealer_state.h
 //! The state the annealer's threads share (internal to core/anneal/engine). What each member is
-//! guarded by is noted beside it; "commit lock" is commit_mutex.
+//! guarded by is noted beside it; "commit lock" is the member commit_lock.
 
 #include <atomic>
 #include <memory>
@@ -54,7 +54,7 @@ struct AnnealerState
     SlabPlan slabs; // set before the workers start
     int t0_samples = 0;
 
-    mutable CommitLock commit_mutex; // core/base/spin_lock.h
+    mutable CommitLock commit_lock; // core/base/spin_lock.h
     std::unique_ptr<NodeTags> tags; // replaced only while every worker is parked
     uint64_t tags_generation = 0;   // bumped when tags is replaced
     //! vertices_size() of the mesh as last published: seeds are drawn below it, so a worker
