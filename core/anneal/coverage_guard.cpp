@@ -3,16 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
-#include <unordered_set>
 
+#include "core/anneal/surface_samples.h"
 #include "core/base/errors.h"
 #include "core/mesh/element_ranges.h"
 
 namespace zomeify {
 namespace {
-
-// Subdivisions of one triangle's side at most: a sliver of S hundreds of b0 long gets no more.
-constexpr int kMaxSubdivisions = 1024;
 
 Vec3 to_vec3(const ZVec& p)
 {
@@ -30,37 +27,6 @@ uint64_t pack(int64_t x, int64_t y, int64_t z)
     return (axis(x) << 42) | (axis(y) << 21) | axis(z);
 }
 
-// Points spread over S in Zome units, about `spacing` apart: every triangle subdivided finely
-// enough, then one point kept per cell of a `spacing` grid (first come, so deterministic).
-std::vector<Vec3> surface_samples(const SurfaceContext& ctx, double spacing)
-{
-    const TriangleMesh& mesh = ctx.projector().mesh();
-    const double scale = ctx.transform().scale;
-    const Vec3 translation(ctx.transform().translation[0], ctx.transform().translation[1],
-                           ctx.transform().translation[2]);
-    std::vector<Vec3> zome(mesh.positions.size());
-    for (size_t i = 0; i < zome.size(); ++i) zome[i] = (mesh.positions[i] - translation) / scale;
-
-    std::vector<Vec3> out;
-    std::unordered_set<uint64_t> taken;
-    const auto offer = [&](const Vec3& p) {
-        if (taken.insert(pack(cell_index(p.x(), spacing), cell_index(p.y(), spacing), cell_index(p.z(), spacing))).second)
-            out.push_back(p);
-    };
-    for (const auto& t : mesh.triangles)
-    {
-        const Vec3& a = zome[t[0]];
-        const Vec3& b = zome[t[1]];
-        const Vec3& c = zome[t[2]];
-        const double longest = std::max({(b - a).norm(), (c - b).norm(), (a - c).norm()});
-        const int n = static_cast<int>(std::clamp(std::ceil(longest / spacing), 1.0, double{kMaxSubdivisions}));
-        for (int i = 0; i <= n; ++i)
-            for (int j = 0; i + j <= n; ++j)
-                offer(a + (static_cast<double>(i) / n) * (b - a) + (static_cast<double>(j) / n) * (c - a));
-    }
-    return out;
-}
-
 } // namespace
 
 CoverageGuard::CoverageGuard(const SurfaceContext& ctx, const ZomeMesh& start, const CoverageOptions& options)
@@ -72,7 +38,7 @@ CoverageGuard::CoverageGuard(const SurfaceContext& ctx, const ZomeMesh& start, c
         throw InvalidInputError("the coverage sample spacing must be a positive number of b0");
     if (!enabled())
         return;
-    std::vector<Vec3> points = surface_samples(ctx, options.spacing);
+    std::vector<Vec3> points = surface_sample_points(ctx, options.spacing);
     std::vector<uint64_t> keys(points.size());
     for (size_t i = 0; i < points.size(); ++i)
     {

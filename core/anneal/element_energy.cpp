@@ -1,5 +1,7 @@
 #include "core/anneal/element_energy.h"
 
+#include <array>
+
 #include "core/mesh/circulators.h"
 
 namespace zomeify {
@@ -27,22 +29,35 @@ EnergyFixed corner_energy(const ZVec& prev, const ZVec& at, const ZVec& next, co
     return quantize(corner_value(difference(at, next), difference(at, prev), n_at));
 }
 
+// The outward (Newell) normal of a face, summed from its smallest corner so that a face gives the
+// same bits whichever corner a description starts from.
+Vec3 newell_normal(std::span<const ZVec> corners) noexcept
+{
+    const size_t k = corners.size();
+    size_t first = 0;
+    for (size_t i = 1; i < k; ++i)
+        if (corners[i] < corners[first])
+            first = i;
+    Vec3 newell = Vec3::Zero();
+    for (size_t i = 0; i < k; ++i)
+        newell += lattice_sum(corners[(first + i) % k]).divided(1).cross(lattice_sum(corners[(first + i + 1) % k]).divided(1));
+    return newell;
+}
+
 FaceEnergy face_energy(std::span<const ZVec> corners, NodeNormals& normals, const EnergyOptions& options) noexcept
 {
     FaceEnergy out;
     const size_t k = corners.size();
     LatticeSum sum;
-    Vec3 newell = Vec3::Zero();
     for (size_t i = 0; i < k; ++i)
     {
         sum += corners[i];
         out.normal += corner_energy(corners[(i + k - 1) % k], corners[i], corners[(i + 1) % k], normals.at(corners[i]));
-        newell += lattice_sum(corners[i]).divided(1).cross(lattice_sum(corners[(i + 1) % k]).divided(1));
     }
     out.corners = static_cast<int>(k);
     const SurfaceSample barycentre = normals.context().sample(sum, out.corners, &corners[0]);
     out.distance = quantize(distance_value(barycentre, options));
-    out.fold_over = is_fold_over(newell, barycentre.normal);
+    out.fold_over = is_fold_over(newell_normal(corners), barycentre.normal);
     return out;
 }
 
@@ -54,6 +69,7 @@ FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const
     FaceEnergy out;
     LatticeSum sum;
     const ZVec* first = nullptr;
+    std::array<ZVec, 4> corners;
     for (Halfedge h : face_halfedges(mesh, f))
     {
         const ZVec& at = mesh.position(mesh.to_vertex(h));
@@ -61,9 +77,16 @@ FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const
         sum += at;
         out.normal += corner_energy(mesh.position(mesh.from_vertex(h)), at,
                                     mesh.position(mesh.to_vertex(mesh.next(h))), normals.at(at));
+        if (static_cast<size_t>(out.corners) < corners.size())
+            corners[static_cast<size_t>(out.corners)] = at;
         ++out.corners;
     }
-    out.distance = quantize(distance_value(normals.context().sample(sum, out.corners, first), options));
+    const SurfaceSample barycentre = normals.context().sample(sum, out.corners, first);
+    out.distance = quantize(distance_value(barycentre, options));
+    if (out.corners <= 4)
+        out.fold_over =
+            is_fold_over(newell_normal(std::span<const ZVec>(corners.data(), static_cast<size_t>(out.corners))),
+                         barycentre.normal);
     return out;
 }
 

@@ -1,12 +1,13 @@
 #include "core/anneal/energy.h"
 
 #include "core/anneal/element_energy.h"
+#include "core/anneal/surface_distance.h"
 #include "core/base/errors.h"
 #include "core/mesh/element_ranges.h"
 
 namespace zomeify {
 
-EnergyTerms evaluate_energy(const ZomeMesh& mesh, const SurfaceContext& context, const EnergyOptions& options)
+EnergySums evaluate_local_sums(const ZomeMesh& mesh, const SurfaceContext& context, const EnergyOptions& options)
 {
     if (options.w_complexity != 0.0 && options.target_nodes == 0)
     {
@@ -36,8 +37,18 @@ EnergyTerms evaluate_energy(const ZomeMesh& mesh, const SurfaceContext& context,
         sums.distance += fe.distance;
         sums.normal += fe.normal;
         sums.corners += fe.corners;
+        sums.fold_overs += fe.fold_over ? 1 : 0;
         ++sums.faces;
     }
+    return sums;
+}
+
+EnergyTerms evaluate_energy(const ZomeMesh& mesh, const SurfaceContext& context, const EnergyOptions& options)
+{
+    EnergySums sums = evaluate_local_sums(mesh, context, options);
+    const SurfaceSums surface = evaluate_surface_distance(mesh, context, options);
+    sums.surface = surface.sum;
+    sums.surface_samples = surface.samples;
     return energy_terms(sums, options);
 }
 

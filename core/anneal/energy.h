@@ -28,4 +28,7 @@ namespace zomeify {
 //! (reads the mesh; the context's cache is concurrent).
 EnergyTerms evaluate_energy(const ZomeMesh& mesh, const SurfaceContext& context, const EnergyOptions& options);
 
+//! The sums of every term but E_surface (surface and surface_samples are 0).
+EnergySums evaluate_local_sums(const ZomeMesh& mesh, const SurfaceContext& context, const EnergyOptions& options);
+
 } // namespace zomeify

@@ -41,10 +41,13 @@ EnergySums& EnergySums::operator+=(const EnergySums& d) noexcept
     tangential += d.tangential;
     normal += d.normal;
     fairing += d.fairing;
+    surface += d.surface;
     nodes += d.nodes;
     struts += d.struts;
     faces += d.faces;
     corners += d.corners;
+    surface_samples += d.surface_samples;
+    fold_overs += d.fold_overs;
     return *this;
 }
 
@@ -54,10 +57,13 @@ EnergySums& EnergySums::operator-=(const EnergySums& d) noexcept
     tangential -= d.tangential;
     normal -= d.normal;
     fairing -= d.fairing;
+    surface -= d.surface;
     nodes -= d.nodes;
     struts -= d.struts;
     faces -= d.faces;
     corners -= d.corners;
+    surface_samples -= d.surface_samples;
+    fold_overs -= d.fold_overs;
     return *this;
 }
 
@@ -71,8 +77,11 @@ EnergyTerms energy_terms(const EnergySums& sums, const EnergyOptions& options) n
     t.orientation = options.tangential_share * t.tangential + options.normal_share * t.normal;
     t.fairing = average(sums.fairing, sums.nodes);
     t.complexity = complexity(sums.nodes, options);
+    t.surface = average(sums.surface, sums.surface_samples);
+    t.fold_overs = static_cast<double>(sums.fold_overs);
     t.total = options.w_distance * t.distance + options.w_orientation * t.orientation +
-              options.w_fairing * t.fairing + options.w_complexity * t.complexity;
+              options.w_fairing * t.fairing + options.w_complexity * t.complexity + options.w_surface * t.surface +
+              options.w_fold * t.fold_overs;
     return t;
 }
 
@@ -93,7 +102,9 @@ double energy_change(const EnergySums& base, const EnergySums& delta, const Ener
     return options.w_distance * d_distance +
            options.w_orientation * (options.tangential_share * d_tangential + options.normal_share * d_normal) +
            options.w_fairing * average_change(base.fairing, base.nodes, delta.fairing, delta.nodes) +
-           options.w_complexity * d_complexity;
+           options.w_complexity * d_complexity +
+           options.w_surface * average_change(base.surface, base.surface_samples, delta.surface, delta.surface_samples) +
+           options.w_fold * static_cast<double>(delta.fold_overs);
 }
 
 } // namespace zomeify

@@ -19,10 +19,13 @@ struct EnergySums
     EnergyAccumulator tangential = 0; //!< Σ (dᵀn)²/‖d‖² over struts
     EnergyAccumulator normal = 0;     //!< Σ (1 − nᵀn_b)² over face corners
     EnergyAccumulator fairing = 0;    //!< Σ ‖p − mean of 1-ring‖² over nodes
+    EnergyAccumulator surface = 0;    //!< Σ d²(1 + F(d)) over the points of S, d = distance to the model's faces
     int64_t nodes = 0;                //!< N
     int64_t struts = 0;               //!< S
     int64_t faces = 0;                //!< F
     int64_t corners = 0;              //!< C (sum of face sizes)
+    int64_t surface_samples = 0;      //!< M, the points of S (fixed: a change's delta leaves it 0)
+    int64_t fold_overs = 0;           //!< faces turned against S's normal at their barycentre
 
     //! P = N + S + F, the number of distance samples.
     int64_t samples() const noexcept { return nodes + struts + faces; }
@@ -41,7 +44,9 @@ struct EnergySums
 //!   E_orient  = 0.25·E_tan + 0.75·E_normal
 //!   E_fair    = Σ_nodes ‖p − mean of 1-ring‖² / N
 //!   E_complex = (N − N_target)² / N_target
-//!   E         = 10·E_dist + 100·E_orient + 5·E_fair + 1·E_complex   (EnergyOptions' weights)
+//!   E_surface = Σ_points of S d²(1 + F(d)) / M   (d: distance to the nearest face, capped)
+//!   E         = 10·E_dist + 100·E_orient + 5·E_fair + 1·E_complex + w_s·E_surface
+//!               + w_fold·(fold-over faces)   (EnergyOptions' weights)
 //! An average over no samples counts 0.
 struct EnergyTerms
 {
@@ -52,6 +57,8 @@ struct EnergyTerms
     double orientation = 0.0;
     double fairing = 0.0;
     double complexity = 0.0;
+    double surface = 0.0;
+    double fold_overs = 0.0;  //!< their number
     double total = 0.0; //!< the weighted sum E
 };
 

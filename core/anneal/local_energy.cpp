@@ -105,6 +105,7 @@ private:
             d.distance -= fe.distance;
             d.normal -= fe.normal;
             d.corners -= fe.corners;
+            d.fold_overs -= fe.fold_over ? 1 : 0;
             --d.faces;
         }
     }
@@ -136,6 +137,7 @@ private:
         {
             const FaceEnergy fe = face_energy(f.view(), normals_, options_);
             out_.adds_fold_over = out_.adds_fold_over || fe.fold_over;
+            d.fold_overs += fe.fold_over ? 1 : 0;
             d.distance += fe.distance;
             d.normal += fe.normal;
             d.corners += fe.corners;

@@ -83,8 +83,10 @@ bool propose(OperatorKind kind, const ZomeMesh& mesh, Vertex seed, Rng& rng, Cla
 //! Executes a proposal produced by propose() on the unchanged mesh (same claims held): removes
 //! its faces, struts and nodes, adds its nodes, and adds its faces (creating their struts). The
 //! mesh must have capacity reserved for the additions (SurfaceMesh::has_capacity_for) when other
-//! threads read it concurrently. Throws TopologyError only on a broken contract (a bug).
-void apply_proposal(ZomeMesh& mesh, const Proposal& proposal);
+//! threads read it concurrently. Throws TopologyError only on a broken contract (a bug). With
+//! `added_faces`, the new faces' handles are appended there in the order of change.added_faces().
+void apply_proposal(ZomeMesh& mesh, const Proposal& proposal,
+                    FixedList<Face, LocalChange::kMaxFaces>* added_faces = nullptr);
 
 //! Whether every node the proposal adds still has a free position (a removed node's own position
 //! counts as free). propose() checks this against the global position index, but another thread

@@ -87,6 +87,16 @@ PipelineOptions pipeline_options(const Args &args)
     a.coverage.radius = args.number("--coverage-radius", a.coverage.radius, 0.0, 1e3);
     if (args.has("--operator-weights"))
         a.operator_weights = operator_weights(*args.value("--operator-weights"));
+    EnergyOptions &e = a.energy;
+    e.w_distance = args.number("--w-distance", e.w_distance, 0.0, 1e6);
+    e.w_orientation = args.number("--w-orientation", e.w_orientation, 0.0, 1e6);
+    e.w_fairing = args.number("--w-fairing", e.w_fairing, 0.0, 1e6);
+    e.w_complexity = args.number("--w-complexity", e.w_complexity, 0.0, 1e6);
+    e.w_surface = args.number("--w-surface", e.w_surface, 0.0, 1e6);
+    e.surface_cap = args.number("--surface-cap", e.surface_cap, 0.05, 100.0);
+    e.surface_spacing = args.number("--surface-spacing", e.surface_spacing, 0.05, 100.0);
+    e.surface_zone.f_max = args.number("--surface-zone", e.surface_zone.f_max, 0.0, 1e6);
+    e.w_fold = args.number("--w-fold", e.w_fold, 0.0, 1e6);
     return o;
 }
 
@@ -146,7 +156,9 @@ int cmd_run(const CommandArgs &argv)
 {
     const Args args(argv,
                     {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
-                     "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius"},
+                     "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius",
+                     "--w-distance", "--w-orientation", "--w-fairing", "--w-complexity", "--w-surface", "--surface-cap",
+                     "--surface-spacing", "--surface-zone", "--w-fold"},
                     {"--initial-only"});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");

@@ -14,7 +14,7 @@ nlohmann::json terms_json(const EnergyTerms& t)
 {
     return {{"total", t.total},         {"distance", t.distance}, {"orientation", t.orientation},
             {"tangential", t.tangential}, {"normal", t.normal},   {"fairing", t.fairing},
-            {"complexity", t.complexity}, {"nodes", t.sums.nodes}, {"struts", t.sums.struts},
+            {"complexity", t.complexity}, {"surface", t.surface}, {"fold_overs", t.sums.fold_overs}, {"nodes", t.sums.nodes}, {"struts", t.sums.struts},
             {"faces", t.sums.faces}};
 }
 

@@ -212,9 +212,11 @@ private:
         claims_->release_all();
     }
 
-    bool commit(const EnergyDelta& delta, double u)
+    bool commit(EnergyDelta delta, double u)
     {
         std::lock_guard lock(s_.commit_lock);
+        // E_surface reads the whole model's faces near the change, which claims do not cover.
+        s_.energy.add_surface_change(s_.mesh, proposal_.change, delta);
         if (!metropolis_accept(s_.energy.delta_energy(delta), temperature_, u))
             return false;
         const Additions add = additions(proposal_.change);
@@ -236,8 +238,9 @@ private:
             ++totals_.rejections[static_cast<size_t>(Rejection::Uncovered)];
             return false;
         }
-        apply_proposal(s_.mesh, proposal_);
-        s_.energy.commit(delta);
+        added_faces_.clear();
+        apply_proposal(s_.mesh, proposal_, &added_faces_);
+        s_.energy.commit(delta, std::span<const Face>(added_faces_.begin(), added_faces_.size()));
         s_.published_vertices.store(static_cast<uint32_t>(s_.mesh.vertices_size()), std::memory_order_release);
         if (!s_.has_room_for_any())
             s_.barrier.request();
@@ -265,6 +268,7 @@ private:
     std::optional<Claims> claims_;
     uint64_t tags_generation_ = 0;
     Proposal proposal_;
+    FixedList<Face, LocalChange::kMaxFaces> added_faces_;
     static constexpr uint64_t kNoEpoch = ~uint64_t{0};
     std::vector<MeshIndex> seeds_; // empty: draw among all nodes
     uint64_t slab_epoch_ = kNoEpoch;

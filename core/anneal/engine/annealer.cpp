@@ -62,7 +62,7 @@ AnnealOptions resolve(AnnealOptions o, const ZomeMesh& mesh)
 
 // T0 = t0_spread_factor · stdev(ΔE) over random valid proposals on the starting mesh (paper §5.3). One
 // thread, its own random stream: deterministic in the seed.
-double estimate_t0(const AnnealerState& s, int& valid)
+double estimate_t0(AnnealerState& s, int& valid)
 {
     Rng rng = Rng::for_stream(s.options.seed, 0xFFFF);
     Claims claims; // unshared: every claim succeeds
@@ -78,9 +78,12 @@ double estimate_t0(const AnnealerState& s, int& valid)
             continue;
         if (propose(kind, s.mesh, seed, rng, claims, proposal))
         {
-            const EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change);
+            EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change);
             if (delta.ok() && !delta.adds_fold_over) // what the workers would consider
+            {
+                s.energy.add_surface_change(s.mesh, proposal.change, delta);
                 spread.add(s.energy.delta_energy(delta));
+            }
         }
         claims.release_all();
     }
@@ -118,6 +121,8 @@ AnnealerState::AnnealerState(ZomeMesh start, const SurfaceContext& ctx, const An
 void AnnealerState::make_room()
 {
     mesh.garbage_collection();
+    // Compaction renumbers the faces, which E_surface's points name as their nearest.
+    energy.renumbered(mesh);
     const size_t nv = mesh.n_vertices(), ne = mesh.n_edges(), nf = mesh.n_faces();
     const size_t vertex_room = nv + headroom(nv, 4096);
     mesh.reserve(vertex_room, ne + headroom(ne, 16384), nf + headroom(nf, 8192));

@@ -46,7 +46,7 @@ struct AnnealerState
     AnnealOptions options; // resolved: threads ≥ 1, energy.target_nodes set
 
     ZomeMesh mesh;       // written under the commit lock (or with all workers parked)
-    EnergyState energy;  // sums: commit lock
+    EnergyState energy;  // sums and E_surface's state: commit lock
     CoverageGuard coverage; // commit lock
     size_t uncovered_at_start = 0;
     EnergyTerms start_terms;

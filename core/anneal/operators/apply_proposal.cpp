@@ -11,7 +11,7 @@
 namespace zomeify
 {
 
-void apply_proposal(ZomeMesh &mesh, const Proposal &proposal)
+void apply_proposal(ZomeMesh &mesh, const Proposal &proposal, FixedList<Face, LocalChange::kMaxFaces> *added_faces)
 {
     const LocalChange &c = proposal.change;
     if (proposal.rejection != Rejection::None || c.overflowed())
@@ -50,7 +50,9 @@ void apply_proposal(ZomeMesh &mesh, const Proposal &proposal)
             if (!corners[j].is_valid())
                 throw TopologyError("apply_proposal: a face corner is not a node");
         }
-        mesh.add_face(std::span<const Vertex>(corners.data(), f.size));
+        const Face face = mesh.add_face(std::span<const Vertex>(corners.data(), f.size));
+        if (added_faces)
+            added_faces->push_back(face);
     }
 }
 

@@ -28,11 +28,13 @@ EnergyOptions options_for(size_t nodes)
     return o;
 }
 
-TEST(OperatorEnergy, IncrementalDeltaEqualsFullRecomputationForEveryKind)
+// Applies random proposals of every kind, checking each against a full recomputation.
+void check_every_kind(double w_surface)
 {
     const test::SharedScene scene = test::shared_scene("torus.obj", 10);
     ZomeMesh mesh = from_model(scene.z0);
-    const EnergyOptions options = options_for(mesh.n_vertices());
+    EnergyOptions options = options_for(mesh.n_vertices());
+    options.w_surface = w_surface;
     EnergyState state(mesh, *scene.context, options);
     EnergyTerms before = evaluate_energy(mesh, *scene.context, options);
     std::array<int, kOperatorKinds> checked{};
@@ -47,10 +49,12 @@ TEST(OperatorEnergy, IncrementalDeltaEqualsFullRecomputationForEveryKind)
             continue;
         SCOPED_TRACE(::testing::Message() << "step " << step << " " << operator_name(kind));
         ASSERT_EQ(check_change(mesh, p.change), "");
-        const EnergyDelta delta = state.simulate(mesh, p.change);
+        EnergyDelta delta = state.simulate(mesh, p.change);
         ASSERT_TRUE(delta.ok());
+        state.add_surface_change(mesh, p.change, delta);
         const double de = state.delta_energy(delta);
-        apply_proposal(mesh, p);
+        FixedList<Face, LocalChange::kMaxFaces> added;
+        apply_proposal(mesh, p, &added);
         const ValidationReport report = validate(mesh);
         ASSERT_TRUE(report.ok()) << report.message();
         ASSERT_EQ(report.genus, 1);
@@ -59,7 +63,7 @@ TEST(OperatorEnergy, IncrementalDeltaEqualsFullRecomputationForEveryKind)
         const double de_full = after.total - before.total;
         EXPECT_LE(std::abs(de - de_full), 1e-9 * std::max(std::abs(de_full), 1e-9))
             << "incremental " << de << " full " << de_full;
-        ASSERT_TRUE(state.commit(delta));
+        ASSERT_TRUE(state.commit(delta, std::span<const Face>(added.begin(), added.size())));
         EnergyState fresh(mesh, *scene.context, options);
         ASSERT_TRUE(state.sums() == fresh.sums());
         before = after;
@@ -67,6 +71,15 @@ TEST(OperatorEnergy, IncrementalDeltaEqualsFullRecomputationForEveryKind)
     }
     for (int k = 0; k < kOperatorKinds; ++k)
         EXPECT_GE(checked[static_cast<size_t>(k)], kMinPerKind) << operator_name(static_cast<OperatorKind>(k));
+}
+
+TEST(OperatorEnergy, IncrementalDeltaEqualsFullRecomputationForEveryKind) { check_every_kind(0.0); }
+
+// The same with E_surface (the surface's distance to the model), whose change reads the faces
+// near the change through a grid and the points' nearest faces.
+TEST(OperatorEnergy, SurfaceTermIncrementalEqualsFullRecomputationForEveryKind)
+{
+    check_every_kind(10.0);
 }
 
 // A quick figure, printed and not asserted: propose() + simulate + delta_energy per kind on Z0
