@@ -51,6 +51,8 @@ struct AnnealOptions
     std::array<uint32_t, 7> operator_weights{1, 1, 1, 1, 1, 1, 1};
     //! No commit may leave a part of S uncovered (coverage_guard.h); radius 0 turns it off.
     CoverageOptions coverage;
+    //! No commit may create parts that could not be built side by side (clearance_index.h).
+    bool clearance = true;
     //! Seconds between calls of the progress callback (and best-model snapshots).
     double progress_interval = 0.25;
 };

@@ -47,6 +47,21 @@ bool positions_still_free(const ZomeMesh& mesh, const LocalChange& c) noexcept
     return true;
 }
 
+Rejection rejection_of(ClashKind clash) noexcept
+{
+    switch (clash)
+    {
+    case ClashKind::BallBall:
+        return Rejection::BallsTooClose;
+    case ClashKind::BallStrut:
+        return Rejection::BallOnStrut;
+    case ClashKind::StrutStrut:
+        return Rejection::StrutsTooClose;
+    default:
+        return Rejection::StrutThroughFace;
+    }
+}
+
 class Worker
 {
 public:
@@ -232,6 +247,12 @@ private:
             ++totals_.lost_races;
             return false;
         }
+        if (s_.options.clearance)
+            if (const ClashKind clash = s_.clearance.check(proposal_.change); clash != ClashKind::None)
+            {
+                ++totals_.rejections[static_cast<size_t>(rejection_of(clash))];
+                return false;
+            }
         // Last, because admitting updates the coverage counts as if the change were applied.
         if (!s_.coverage.admit(s_.mesh, proposal_.change))
         {
@@ -239,7 +260,9 @@ private:
             return false;
         }
         added_faces_.clear();
+        s_.clearance.forget(proposal_.change);
         apply_proposal(s_.mesh, proposal_, &added_faces_);
+        s_.clearance.learn(s_.mesh, proposal_.change, std::span<const Face>(added_faces_.begin(), added_faces_.size()));
         s_.energy.commit(delta, std::span<const Face>(added_faces_.begin(), added_faces_.size()));
         s_.published_vertices.store(static_cast<uint32_t>(s_.mesh.vertices_size()), std::memory_order_release);
         if (!s_.has_room_for_any())

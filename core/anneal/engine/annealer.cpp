@@ -91,6 +91,16 @@ double estimate_t0(AnnealerState& s, int& valid)
     return s.options.t0_spread_factor * spread.stdev();
 }
 
+// The input surface's box in Zome units (where the model's grids are dense).
+Box3 zome_box(const SurfaceContext& context)
+{
+    const ModelTransform& t = context.transform();
+    const Vec3 translation(t.translation[0], t.translation[1], t.translation[2]);
+    Box3 box;
+    for (const Vec3& p : context.projector().mesh().positions) box.extend((p - translation) / t.scale);
+    return box;
+}
+
 void add_counts(AnnealStats& into, const AnnealStats& from)
 {
     for (int k = 0; k < kOperatorKinds; ++k)
@@ -109,9 +119,11 @@ void add_counts(AnnealStats& into, const AnnealStats& from)
 
 AnnealerState::AnnealerState(ZomeMesh start, const SurfaceContext& ctx, const AnnealOptions& opts)
     : context(ctx), options(resolve(opts, start)), mesh(std::move(start)), energy(mesh, ctx, options.energy),
-      coverage(ctx, mesh, options.coverage), start_terms(energy.terms()), barrier(options.threads)
+      coverage(ctx, mesh, options.coverage), clearance(dilated(zome_box(ctx), 8.0)), start_terms(energy.terms()),
+      barrier(options.threads)
 {
     uncovered_at_start = coverage.uncovered();
+    clearance.reset(mesh);
     // A commit's new struts and faces take the slots its removed ones left, so a region's
     // elements stay together instead of being appended beside the other threads' (SurfaceMesh).
     mesh.set_slot_reuse(true);
@@ -121,8 +133,9 @@ AnnealerState::AnnealerState(ZomeMesh start, const SurfaceContext& ctx, const An
 void AnnealerState::make_room()
 {
     mesh.garbage_collection();
-    // Compaction renumbers the faces, which E_surface's points name as their nearest.
+    // Compaction renumbers the elements, which E_surface's points and the clearance grids name.
     energy.renumbered(mesh);
+    clearance.reset(mesh);
     const size_t nv = mesh.n_vertices(), ne = mesh.n_edges(), nf = mesh.n_faces();
     const size_t vertex_room = nv + headroom(nv, 4096);
     mesh.reserve(vertex_room, ne + headroom(ne, 16384), nf + headroom(nf, 8192));

@@ -8,6 +8,7 @@
 #include <mutex>
 #include <string>
 
+#include "core/anneal/clearance_index.h"
 #include "core/anneal/energy_state.h"
 #include "core/anneal/engine/anneal_options.h"
 #include "core/anneal/engine/anneal_stats.h"
@@ -48,6 +49,7 @@ struct AnnealerState
     ZomeMesh mesh;       // written under the commit lock (or with all workers parked)
     EnergyState energy;  // sums and E_surface's state: commit lock
     CoverageGuard coverage; // commit lock
+    ClearanceIndex clearance; // commit lock
     size_t uncovered_at_start = 0;
     EnergyTerms start_terms;
     CoolingSchedule schedule{0.0, 0.0};

@@ -56,6 +56,14 @@ std::string_view rejection_name(Rejection r) noexcept
         return "fold-over";
     case Rejection::Uncovered:
         return "uncovers surface";
+    case Rejection::BallsTooClose:
+        return "balls too close";
+    case Rejection::BallOnStrut:
+        return "ball on a strut";
+    case Rejection::StrutsTooClose:
+        return "struts too close";
+    case Rejection::StrutThroughFace:
+        return "strut through a face";
     case Rejection::Overflow:
         return "overflow";
     }

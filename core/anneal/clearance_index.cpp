@@ -1,0 +1,253 @@
+#include "core/anneal/clearance_index.h"
+
+#include <algorithm>
+
+#include "core/geom/clearance.h"
+#include "core/mesh/circulators.h"
+#include "core/mesh/element_ranges.h"
+#include "core/zome/clearance_rules.h"
+
+namespace zomeify {
+namespace {
+
+// Grid cells (b0): about a strut long.
+constexpr double kCell = 1.0;
+constexpr double kBallBall2 = kMinBallBall * kMinBallBall;
+constexpr double kBallStrut2 = kMinBallStrut * kMinBallStrut;
+constexpr double kStrutStrut2 = kMinStrutStrut * kMinStrutStrut;
+
+Vec3 to_vec3(const ZVec& p)
+{
+    const auto c = p.to_double();
+    return {c[0], c[1], c[2]};
+}
+
+// Whether the segment crosses or touches one of the panel's triangles.
+bool pierces(const Vec3& a, const Vec3& b, const FaceShape& shape)
+{
+    for (int i = 0; i < shape.count; ++i)
+    {
+        const auto& t = shape.triangles[i];
+        if (segment_intersects_triangle(a, b, t[0], t[1], t[2]))
+            return true;
+    }
+    return false;
+}
+
+void mark_all(std::vector<uint32_t>& marks, uint32_t index, uint32_t mark)
+{
+    if (index >= marks.size())
+        marks.resize(std::max<size_t>(index + 1, 2 * marks.size()), 0);
+    marks[index] = mark;
+}
+
+} // namespace
+
+const char* clash_name(ClashKind kind) noexcept
+{
+    switch (kind)
+    {
+    case ClashKind::None:
+        return "none";
+    case ClashKind::BallBall:
+        return "ball–ball";
+    case ClashKind::BallStrut:
+        return "ball–strut";
+    case ClashKind::StrutStrut:
+        return "strut–strut";
+    case ClashKind::StrutFace:
+        return "strut through face";
+    }
+    return "?";
+}
+
+bool ClearanceIndex::Panel::has_corner(const ZVec& p) const noexcept
+{
+    for (int i = 0; i < size; ++i)
+        if (corners[static_cast<size_t>(i)] == p)
+            return true;
+    return false;
+}
+
+ClearanceIndex::Ball ClearanceIndex::make_ball(const ZVec& p)
+{
+    Ball b{to_vec3(p), p, {}};
+    b.box.extend(b.p);
+    return b;
+}
+
+ClearanceIndex::Strut ClearanceIndex::make_strut(const ZVec& a, const ZVec& b)
+{
+    Strut s{to_vec3(a), to_vec3(b), a, b, {}};
+    s.box.extend(s.a);
+    s.box.extend(s.b);
+    return s;
+}
+
+ClearanceIndex::Panel ClearanceIndex::make_panel(std::span<const ZVec> corners)
+{
+    Panel p;
+    p.shape = face_shape(corners);
+    p.size = static_cast<int>(std::min<size_t>(corners.size(), 4));
+    std::copy_n(corners.begin(), p.size, p.corners.begin());
+    p.box = p.shape.box;
+    return p;
+}
+
+ClearanceIndex::ClearanceIndex(const Box3& domain)
+    : balls_(domain, kCell), struts_(domain, kCell), panels_(domain, kCell)
+{
+}
+
+void ClearanceIndex::reset(const ZomeMesh& mesh)
+{
+    balls_.clear();
+    struts_.clear();
+    panels_.clear();
+    for (Vertex v : vertices(mesh)) balls_.insert(v.idx(), make_ball(mesh.position(v)));
+    for (Edge e : edges(mesh))
+        struts_.insert(e.idx(), make_strut(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1))));
+    for (Face f : faces(mesh))
+    {
+        std::array<ZVec, 4> corners;
+        size_t n = 0;
+        for (Vertex v : face_vertices(mesh, f))
+            if (n < corners.size())
+                corners[n++] = mesh.position(v);
+        panels_.insert(f.idx(), make_panel(std::span<const ZVec>(corners.data(), n)));
+    }
+}
+
+ClashKind ClearanceIndex::check_ball(const Ball& ball) const
+{
+    ClashKind found = ClashKind::None;
+    balls_.for_each_near(dilated(ball.box, kMinBallBall), [&](uint32_t i, const Ball& other) {
+        if (found == ClashKind::None && !removed(removed_balls_, i) && (other.p - ball.p).squaredNorm() < kBallBall2)
+            found = ClashKind::BallBall;
+    });
+    for (const Ball& other : new_balls_)
+        if (&other != &ball && (other.p - ball.p).squaredNorm() < kBallBall2)
+            return ClashKind::BallBall;
+    if (found != ClashKind::None)
+        return found;
+    // A new ball holds none of the struts that stay (its own are all new).
+    struts_.for_each_near(dilated(ball.box, kMinBallStrut), [&](uint32_t i, const Strut& s) {
+        if (found == ClashKind::None && !removed(removed_struts_, i) && !s.holds(ball.at) &&
+            point_segment_distance_squared(ball.p, s.a, s.b) < kBallStrut2)
+            found = ClashKind::BallStrut;
+    });
+    return found;
+}
+
+ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
+{
+    ClashKind found = ClashKind::None;
+    const auto near_ball = [&](const Ball& b) {
+        return !strut.holds(b.at) && point_segment_distance_squared(b.p, strut.a, strut.b) < kBallStrut2;
+    };
+    balls_.for_each_near(dilated(strut.box, kMinBallStrut), [&](uint32_t i, const Ball& b) {
+        if (found == ClashKind::None && !removed(removed_balls_, i) && near_ball(b))
+            found = ClashKind::BallStrut;
+    });
+    for (const Ball& b : new_balls_)
+        if (near_ball(b))
+            return ClashKind::BallStrut;
+    if (found != ClashKind::None)
+        return found;
+
+    const auto too_close = [&](const Strut& o) {
+        return !strut.shares_ball(o) && segment_segment_distance_squared(strut.a, strut.b, o.a, o.b) < kStrutStrut2;
+    };
+    struts_.for_each_near(dilated(strut.box, kMinStrutStrut), [&](uint32_t i, const Strut& o) {
+        if (found == ClashKind::None && !removed(removed_struts_, i) && too_close(o))
+            found = ClashKind::StrutStrut;
+    });
+    for (size_t j = index + 1; j < new_struts_.size(); ++j)
+        if (too_close(new_struts_[j]))
+            return ClashKind::StrutStrut;
+    if (found != ClashKind::None)
+        return found;
+
+    const auto through = [&](const Panel& p) {
+        return !p.has_corner(strut.from) && !p.has_corner(strut.to) && pierces(strut.a, strut.b, p.shape);
+    };
+    panels_.for_each_near(strut.box, [&](uint32_t i, const Panel& p) {
+        if (found == ClashKind::None && !removed(removed_panels_, i) && through(p))
+            found = ClashKind::StrutFace;
+    });
+    for (const Panel& p : new_panels_)
+        if (through(p))
+            return ClashKind::StrutFace;
+    return found;
+}
+
+ClashKind ClearanceIndex::check_panel(const Panel& panel) const
+{
+    // New struts against new panels were checked with the struts.
+    ClashKind found = ClashKind::None;
+    struts_.for_each_near(panel.box, [&](uint32_t i, const Strut& s) {
+        if (found == ClashKind::None && !removed(removed_struts_, i) && !panel.has_corner(s.from) &&
+            !panel.has_corner(s.to) && pierces(s.a, s.b, panel.shape))
+            found = ClashKind::StrutFace;
+    });
+    return found;
+}
+
+ClashKind ClearanceIndex::check(const LocalChange& change) const
+{
+    if (++mark_ == 0) // wrapped: old marks could match again
+    {
+        for (auto* marks : {&removed_balls_, &removed_struts_, &removed_panels_})
+            std::fill(marks->begin(), marks->end(), 0U);
+        mark_ = 1;
+    }
+    for (Vertex v : change.removed_nodes()) mark_all(removed_balls_, v.idx(), mark_);
+    for (Edge e : change.removed_struts()) mark_all(removed_struts_, e.idx(), mark_);
+    for (Face f : change.removed_faces()) mark_all(removed_panels_, f.idx(), mark_);
+    new_balls_.clear();
+    new_struts_.clear();
+    new_panels_.clear();
+    for (const ZVec& p : change.added_nodes()) new_balls_.push_back(make_ball(p));
+    for (const NewStrut& s : change.added_struts()) new_struts_.push_back(make_strut(s.a, s.b));
+    for (const NewFace& f : change.added_faces()) new_panels_.push_back(make_panel(f.view()));
+
+    for (const Ball& b : new_balls_)
+        if (const ClashKind k = check_ball(b); k != ClashKind::None)
+            return k;
+    for (size_t i = 0; i < new_struts_.size(); ++i)
+        if (const ClashKind k = check_strut(new_struts_[i], i); k != ClashKind::None)
+            return k;
+    for (const Panel& p : new_panels_)
+        if (const ClashKind k = check_panel(p); k != ClashKind::None)
+            return k;
+    return ClashKind::None;
+}
+
+void ClearanceIndex::forget(const LocalChange& change)
+{
+    for (Vertex v : change.removed_nodes()) balls_.erase(v.idx());
+    for (Edge e : change.removed_struts()) struts_.erase(e.idx());
+    for (Face f : change.removed_faces()) panels_.erase(f.idx());
+}
+
+void ClearanceIndex::learn(const ZomeMesh& mesh, const LocalChange& change, std::span<const Face> added_faces)
+{
+    for (const ZVec& p : change.added_nodes())
+    {
+        const Vertex v = mesh.find_vertex(p);
+        if (v.is_valid())
+            balls_.insert(v.idx(), make_ball(p));
+    }
+    for (const NewStrut& s : change.added_struts())
+    {
+        const Vertex a = mesh.find_vertex(s.a), b = mesh.find_vertex(s.b);
+        const Halfedge h = a.is_valid() && b.is_valid() ? mesh.find_halfedge(a, b) : Halfedge();
+        if (h.is_valid())
+            struts_.insert(ZomeMesh::edge(h).idx(), make_strut(s.a, s.b));
+    }
+    const auto& faces = change.added_faces();
+    for (size_t k = 0; k < faces.size() && k < added_faces.size(); ++k)
+        panels_.insert(added_faces[k].idx(), make_panel(faces[k].view()));
+}
+
+} // namespace zomeify

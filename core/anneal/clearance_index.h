@@ -1,0 +1,98 @@
+#pragma once
+//! \file clearance_index.h
+//! Physical validity as an operator rule (design.md §3.8, clearance_rules.h): the annealer refuses
+//! every commit that would leave two balls too close, a ball too close to a strut it does not
+//! hold, two struts sharing no ball too close (a bow-tie quad among them), or a strut passing
+//! through a face it shares no ball with. Only the change's new elements can create a clash, so
+//! they are checked against the elements near them, found through grids of the model's balls,
+//! struts and faces that the commits keep up to date. A model that starts with clashes keeps them
+//! until some change removes them.
+//!
+//! Not thread-safe: the annealer calls it inside the commit section.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/anneal/element_grid.h"
+#include "core/anneal/face_shape.h"
+#include "core/anneal/fixed_list.h"
+#include "core/anneal/local_change.h"
+#include "core/mesh/zome_mesh.h"
+
+namespace zomeify {
+
+//! What a change would break.
+enum class ClashKind : uint8_t
+{
+    None,
+    BallBall,   //!< two balls closer than kMinBallBall
+    BallStrut,  //!< a ball closer than kMinBallStrut to a strut it does not hold
+    StrutStrut, //!< two struts sharing no ball closer than kMinStrutStrut
+    StrutFace,  //!< a strut through a face it shares no ball with
+};
+inline constexpr int kClashKinds = 5;
+const char* clash_name(ClashKind kind) noexcept;
+
+class ClearanceIndex
+{
+public:
+    //! Grids covering `domain` (b0 units; elements outside it still count, in the border cells).
+    explicit ClearanceIndex(const Box3& domain);
+
+    //! Indexes every element of `mesh` (also after a compaction renumbered them).
+    void reset(const ZomeMesh& mesh);
+    //! The first clash that applying `change` would create, or None.
+    ClashKind check(const LocalChange& change) const;
+    //! Keeps the grids in step with an applied change: call forget() with the mesh before
+    //! apply_proposal, and learn() after it with the new faces' handles (change.added_faces() order).
+    void forget(const LocalChange& change);
+    void learn(const ZomeMesh& mesh, const LocalChange& change, std::span<const Face> added_faces);
+
+private:
+    struct Ball
+    {
+        Vec3 p;
+        ZVec at;
+        Box3 box;
+    };
+    struct Strut
+    {
+        Vec3 a, b;
+        ZVec from, to;
+        Box3 box;
+        bool holds(const ZVec& p) const noexcept { return p == from || p == to; }
+        bool shares_ball(const Strut& o) const noexcept { return holds(o.from) || holds(o.to); }
+    };
+    struct Panel
+    {
+        FaceShape shape;
+        std::array<ZVec, 4> corners{};
+        int size = 0;
+        Box3 box;
+        bool has_corner(const ZVec& p) const noexcept;
+    };
+    static Ball make_ball(const ZVec& p);
+    static Strut make_strut(const ZVec& a, const ZVec& b);
+    static Panel make_panel(std::span<const ZVec> corners);
+
+    ClashKind check_ball(const Ball& ball) const;
+    ClashKind check_strut(const Strut& strut, size_t index) const;
+    ClashKind check_panel(const Panel& panel) const;
+    bool removed(const std::vector<uint32_t>& marks, uint32_t index) const noexcept
+    {
+        return index < marks.size() && marks[index] == mark_;
+    }
+
+    ElementGrid<Ball> balls_;
+    ElementGrid<Strut> struts_;
+    ElementGrid<Panel> panels_;
+    // The change under check: its new elements and the marks of its removed ones.
+    mutable FixedList<Ball, LocalChange::kMaxNodes> new_balls_;
+    mutable FixedList<Strut, LocalChange::kMaxStruts> new_struts_;
+    mutable FixedList<Panel, LocalChange::kMaxFaces> new_panels_;
+    mutable std::vector<uint32_t> removed_balls_, removed_struts_, removed_panels_;
+    mutable uint32_t mark_ = 0;
+};
+
+} // namespace zomeify
