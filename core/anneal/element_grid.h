@@ -9,11 +9,20 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/geom/box3.h"
 
 namespace zomeify {
+
+//! One thread's marks of the elements a query has visited (queries with their own marks may run
+//! concurrently on a grid nobody writes to).
+struct GridVisits
+{
+    std::vector<uint32_t> seen;
+    uint32_t stamp = 0;
+};
 
 //! T must have a member `Box3 box`.
 template <class T>
@@ -54,7 +63,6 @@ public:
             const size_t n = std::max<size_t>(index + 1, 2 * live_.size());
             live_.resize(n, 0);
             elements_.resize(n);
-            seen_.resize(n, 0);
         }
         live_[index] = 1;
         elements_[index] = element;
@@ -81,14 +89,17 @@ public:
     const T& operator[](uint32_t index) const noexcept { return elements_[index]; }
     size_t size() const noexcept { return size_; }
 
-    //! Calls f(index, element) once for every element whose cells overlap `box`.
+    //! Calls f(index, element) once for every element whose cells overlap `box`, marking what it
+    //! visits in `visits` (so concurrent queries with their own marks do not write to the grid).
     template <class F>
-    void for_each_near(const Box3& box, F&& f) const
+    void for_each_near(const Box3& box, GridVisits& visits, F&& f) const
     {
-        if (++stamp_ == 0) // wrapped: old marks could match again
+        if (visits.seen.size() < live_.size())
+            visits.seen.resize(live_.size(), 0);
+        if (++visits.stamp == 0) // wrapped: old marks could match again
         {
-            std::fill(seen_.begin(), seen_.end(), 0U);
-            stamp_ = 1;
+            std::fill(visits.seen.begin(), visits.seen.end(), 0U);
+            visits.stamp = 1;
         }
         const std::array<int, 3> lo = cell_of(box.min), hi = cell_of(box.max);
         for (int z = lo[2]; z <= hi[2]; ++z)
@@ -96,11 +107,17 @@ public:
                 for (int x = lo[0]; x <= hi[0]; ++x)
                     for (uint32_t index : cells_[cell_index(x, y, z)])
                     {
-                        if (seen_[index] == stamp_)
+                        if (visits.seen[index] == visits.stamp)
                             continue;
-                        seen_[index] = stamp_;
+                        visits.seen[index] = visits.stamp;
                         f(index, elements_[index]);
                     }
+    }
+    //! The same with the grid's own marks (one thread at a time).
+    template <class F>
+    void for_each_near(const Box3& box, F&& f) const
+    {
+        for_each_near(box, visits_, std::forward<F>(f));
     }
 
 private:
@@ -131,8 +148,7 @@ private:
     std::vector<std::vector<uint32_t>> cells_{1};
     std::vector<T> elements_;
     std::vector<uint8_t> live_;
-    mutable std::vector<uint32_t> seen_;
-    mutable uint32_t stamp_ = 0;
+    mutable GridVisits visits_;
     size_t size_ = 0;
     Vec3 origin_ = Vec3::Zero();
     double inverse_cell_ = 1.0;

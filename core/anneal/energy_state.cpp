@@ -16,14 +16,14 @@ void EnergyState::reset(const ZomeMesh& mesh)
     sums_.surface_samples = static_cast<int64_t>(surface_.sample_count());
 }
 
-bool EnergyState::commit(const EnergyDelta& delta, std::span<const Face> added_faces)
+bool EnergyState::commit(const EnergyDelta& delta, std::span<const Face> added_faces, SurfaceChange& scratch)
 {
     if (!delta.ok())
     {
         return false;
     }
     sums_ += delta.sums;
-    surface_.commit(added_faces);
+    surface_.commit(scratch, added_faces);
     return true;
 }
 

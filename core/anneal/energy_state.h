@@ -40,13 +40,26 @@ public:
     {
         return simulate_change(mesh, change, context_, options_);
     }
-    //! Adds E_surface's change to a simulated delta (no-op when w_surface is 0). Not thread-safe;
-    //! remembers the change for commit() until the next call.
-    void add_surface_change(const ZomeMesh& mesh, const LocalChange& change, EnergyDelta& delta)
+    //! Adds E_surface's change to a simulated delta (no-op when w_surface is 0); `scratch` keeps
+    //! what commit() needs. Reads shared state: no commit may run at the same time (the annealer
+    //! holds its commit lock shared), and if one came in between, call it again (surface_current).
+    void add_surface_change(const ZomeMesh& mesh, const LocalChange& change, EnergyDelta& delta,
+                            SurfaceChange& scratch) const
     {
         if (delta.ok())
-            delta.sums.surface = surface_.simulate(mesh, change);
+            delta.sums.surface = surface_.simulate(mesh, change, scratch);
     }
+    //! Single-threaded form with the state's own scratch.
+    void add_surface_change(const ZomeMesh& mesh, const LocalChange& change, EnergyDelta& delta)
+    {
+        add_surface_change(mesh, change, delta, scratch_);
+    }
+    //! Whether `scratch` was simulated against the current E_surface state.
+    bool surface_current(const SurfaceChange& scratch) const noexcept
+    {
+        return !surface_.enabled() || scratch.version() == surface_.version();
+    }
+    bool surface_enabled() const noexcept { return surface_.enabled(); }
     //! ΔE of a simulated change against the current sums (0 if !delta.ok()).
     double delta_energy(const EnergyDelta& delta) const noexcept
     {
@@ -56,7 +69,11 @@ public:
     //! faces' handles in the order of the change's added_faces() (apply_proposal gives them), for
     //! E_surface, whose delta must come from add_surface_change() of that same change. Returns
     //! false, changing nothing, if !delta.ok().
-    bool commit(const EnergyDelta& delta, std::span<const Face> added_faces = {});
+    bool commit(const EnergyDelta& delta, std::span<const Face> added_faces, SurfaceChange& scratch);
+    bool commit(const EnergyDelta& delta, std::span<const Face> added_faces = {})
+    {
+        return commit(delta, added_faces, scratch_);
+    }
 
     const EnergySums& sums() const noexcept { return sums_; }
     EnergyTerms terms() const noexcept { return energy_terms(sums_, options_); }
@@ -68,6 +85,7 @@ private:
     const SurfaceContext& context_;
     EnergyOptions options_;
     SurfaceDistance surface_;
+    SurfaceChange scratch_;
     EnergySums sums_;
 };
 

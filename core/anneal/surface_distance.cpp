@@ -50,10 +50,8 @@ SurfaceDistance::SurfaceDistance(const SurfaceContext& context, const EnergyOpti
     owner_.assign(grid_.size(), kNone);
     next_owned_.assign(grid_.size(), kNone);
     previous_owned_.assign(grid_.size(), kNone);
-    updated_mark_.assign(grid_.size(), 0);
     cell_d2_.assign(grid_.cell_count(), cap2_);
     cell_bound_.assign(grid_.cell_count(), cap2_);
-    updates_.reserve(1024);
 }
 
 EnergyFixed SurfaceDistance::value(double d2) const noexcept
@@ -62,13 +60,13 @@ EnergyFixed SurfaceDistance::value(double d2) const noexcept
     return quantize(d2 * (1.0 + forbidden_zone(std::sqrt(d2), options_.surface_zone)));
 }
 
-void SurfaceDistance::next_mark() noexcept
+void SurfaceDistance::next_mark(SurfaceChange& c) noexcept
 {
-    if (++mark_ == 0) // wrapped: old marks could match again
+    if (++c.mark_ == 0) // wrapped: old marks could match again
     {
-        std::fill(removed_mark_.begin(), removed_mark_.end(), 0U);
-        std::fill(updated_mark_.begin(), updated_mark_.end(), 0U);
-        mark_ = 1;
+        std::fill(c.removed_mark_.begin(), c.removed_mark_.end(), 0U);
+        std::fill(c.updated_mark_.begin(), c.updated_mark_.end(), 0U);
+        c.mark_ = 1;
     }
 }
 
@@ -115,30 +113,31 @@ void SurfaceDistance::refresh_cell_bound(uint32_t cell)
     cell_bound_[cell] = bound;
 }
 
-void SurfaceDistance::search_grid(const Vec3& p, Nearest& n) const
+void SurfaceDistance::search_grid(const Vec3& p, Nearest& n, SurfaceChange& c) const
 {
     // The box reaches as far as the best so far: faces outside it are farther than that, so it
     // also bounds the others.
     const double reach = n.best;
     Box3 box;
     box.extend(p);
-    faces_.for_each_near(dilated(box, std::sqrt(reach) + kSlack), [&](uint32_t face, const FaceShape& shape) {
-        if (!removed(face))
+    faces_.for_each_near(dilated(box, std::sqrt(reach) + kSlack), c.visits_, [&](uint32_t face, const FaceShape& shape) {
+        if (!removed(c, face))
             n.offer(face_distance_squared_below(p, shape, n.second), face, false);
     });
     n.second = std::min(n.second, reach);
 }
 
-void SurfaceDistance::search_added(const Vec3& p, Nearest& n) const noexcept
+void SurfaceDistance::search_added(const Vec3& p, Nearest& n, const SurfaceChange& c) noexcept
 {
-    for (size_t k = 0; k < added_.size(); ++k)
-        n.offer(face_distance_squared_below(p, added_[k], n.second), static_cast<uint32_t>(k), true);
+    for (size_t k = 0; k < c.added_.size(); ++k)
+        n.offer(face_distance_squared_below(p, c.added_[k], n.second), static_cast<uint32_t>(k), true);
 }
 
 void SurfaceDistance::reset(const ZomeMesh& mesh)
 {
     sum_ = 0;
-    next_mark(); // nothing counts as removed
+    ++version_;
+    next_mark(own_); // nothing counts as removed
     if (!enabled_)
         return;
     faces_.clear();
@@ -148,7 +147,7 @@ void SurfaceDistance::reset(const ZomeMesh& mesh)
     for (uint32_t i = 0; i < points.size(); ++i)
     {
         Nearest n{cap2_, cap2_, kNone, false};
-        search_grid(points[i], n);
+        search_grid(points[i], n, own_);
         d2_[i] = n.best;
         bound_[i] = n.second;
         link(i, n.owner);
@@ -157,88 +156,93 @@ void SurfaceDistance::reset(const ZomeMesh& mesh)
     for (uint32_t c = 0; c < grid_.cell_count(); ++c) refresh_cell_bound(c);
 }
 
-void SurfaceDistance::record(uint32_t point, const Nearest& n)
+void SurfaceDistance::record(uint32_t point, const Nearest& n, SurfaceChange& c) const
 {
-    updates_.push_back({point, n.owner, n.owner_added, n.best, n.second});
-    updated_mark_[point] = mark_;
-    delta_ += value(n.best) - value(d2_[point]);
+    c.updates_.push_back({point, n.owner, n.owner_added, n.best, n.second});
+    c.updated_mark_[point] = c.mark_;
+    c.delta_ += value(n.best) - value(d2_[point]);
 }
 
-EnergyAccumulator SurfaceDistance::simulate(const ZomeMesh& mesh, const LocalChange& change)
+EnergyAccumulator SurfaceDistance::simulate(const ZomeMesh& mesh, const LocalChange& change, SurfaceChange& c) const
 {
-    updates_.clear();
-    added_.clear();
-    removed_faces_.clear();
-    added_box_ = Box3();
-    delta_ = 0;
+    c.updates_.clear();
+    c.added_.clear();
+    c.removed_faces_.clear();
+    c.added_box_ = Box3();
+    c.delta_ = 0;
+    c.version_ = version_;
     if (!enabled_)
         return 0;
-    next_mark();
-    if (removed_mark_.size() < mesh.faces_size())
-        removed_mark_.resize(mesh.faces_size(), 0);
+    next_mark(c);
+    if (c.removed_mark_.size() < mesh.faces_size())
+        c.removed_mark_.resize(mesh.faces_size(), 0);
+    if (c.updated_mark_.size() < grid_.size())
+        c.updated_mark_.resize(grid_.size(), 0);
     for (Face f : change.removed_faces())
     {
-        removed_faces_.push_back(f.idx());
-        removed_mark_[f.idx()] = mark_;
+        c.removed_faces_.push_back(f.idx());
+        c.removed_mark_[f.idx()] = c.mark_;
     }
     for (const NewFace& f : change.added_faces())
     {
-        added_.push_back(face_shape(f.view()));
-        added_box_.extend(added_[added_.size() - 1].box);
+        c.added_.push_back(face_shape(f.view()));
+        c.added_box_.extend(c.added_[c.added_.size() - 1].box);
     }
 
     // Points whose nearest face goes. Every face that stays is at least bound_ away: when an added
     // face is nearer, it is the nearest; otherwise the grid has the answer.
     const std::vector<Vec3>& points = grid_.points();
-    for (uint32_t face : removed_faces_)
+    for (uint32_t face : c.removed_faces_)
         for (uint32_t i = face < first_owned_.size() ? first_owned_[face] : kNone; i != kNone; i = next_owned_[i])
         {
             Nearest n{cap2_, cap2_, kNone, false};
-            search_added(points[i], n);
+            search_added(points[i], n, c);
             if (n.best <= bound_[i])
                 n.second = std::min(n.second, bound_[i]);
             else
-                search_grid(points[i], n);
-            record(i, n);
+                search_grid(points[i], n, c);
+            record(i, n, c);
         }
 
     // Points an added face comes closer to: only in cells whose farthest point can reach it.
-    if (added_box_.empty())
-        return delta_;
-    grid_.for_each_cell_near(dilated(added_box_, options_.surface_cap), [&](size_t cell, const Box3& cell_box) {
-        const Vec3 gap = (added_box_.min - cell_box.max).cwiseMax(cell_box.min - added_box_.max).cwiseMax(0.0);
+    if (c.added_box_.empty())
+        return c.delta_;
+    const Box3& added_box = c.added_box_;
+    grid_.for_each_cell_near(dilated(added_box, options_.surface_cap), [&](size_t cell, const Box3& cell_box) {
+        const Vec3 gap = (added_box.min - cell_box.max).cwiseMax(cell_box.min - added_box.max).cwiseMax(0.0);
         if (gap.squaredNorm() > cell_d2_[cell] + kSlack)
             return;
         for (uint32_t i = grid_.begin(cell); i < grid_.end(cell); ++i)
         {
             const Vec3& p = points[i];
-            if (updated_mark_[i] == mark_ || added_box_.distance_squared(p) > d2_[i] + kSlack)
+            if (c.updated_mark_[i] == c.mark_ || added_box.distance_squared(p) > d2_[i] + kSlack)
                 continue; // lost (done above), or out of reach
             // The old owner stays, now one of the others.
             Nearest n{d2_[i], bound_[i], owner_[i], false};
-            search_added(p, n);
+            search_added(p, n, c);
             if (n.owner_added)
-                record(i, n);
+                record(i, n, c);
         }
     });
-    return delta_;
+    return c.delta_;
 }
 
-void SurfaceDistance::lower_bounds_near_added()
+void SurfaceDistance::lower_bounds_near_added(const SurfaceChange& c)
 {
     const std::vector<Vec3>& points = grid_.points();
-    grid_.for_each_cell_near(dilated(added_box_, options_.surface_cap), [&](size_t cell, const Box3& cell_box) {
-        const Vec3 gap = (added_box_.min - cell_box.max).cwiseMax(cell_box.min - added_box_.max).cwiseMax(0.0);
+    const Box3& added_box = c.added_box_;
+    grid_.for_each_cell_near(dilated(added_box, options_.surface_cap), [&](size_t cell, const Box3& cell_box) {
+        const Vec3 gap = (added_box.min - cell_box.max).cwiseMax(cell_box.min - added_box.max).cwiseMax(0.0);
         if (gap.squaredNorm() > cell_bound_[cell] + kSlack)
             return;
         bool lowered = false;
         for (uint32_t i = grid_.begin(cell); i < grid_.end(cell); ++i)
         {
-            if (updated_mark_[i] == mark_ || added_box_.distance_squared(points[i]) > bound_[i] + kSlack)
+            if (c.updated_mark_[i] == c.mark_ || added_box.distance_squared(points[i]) > bound_[i] + kSlack)
                 continue;
-            for (size_t k = 0; k < added_.size(); ++k)
+            for (size_t k = 0; k < c.added_.size(); ++k)
             {
-                const double d = face_distance_squared_below(points[i], added_[k], bound_[i]);
+                const double d = face_distance_squared_below(points[i], c.added_[k], bound_[i]);
                 if (d < bound_[i])
                 {
                     bound_[i] = d;
@@ -251,14 +255,14 @@ void SurfaceDistance::lower_bounds_near_added()
     });
 }
 
-void SurfaceDistance::commit(std::span<const Face> added)
+void SurfaceDistance::commit(SurfaceChange& c, std::span<const Face> added)
 {
     if (!enabled_)
         return;
-    for (uint32_t f : removed_faces_) faces_.erase(f);
-    for (size_t k = 0; k < added_.size() && k < added.size(); ++k) faces_.insert(added[k].idx(), added_[k]);
+    for (uint32_t f : c.removed_faces_) faces_.erase(f);
+    for (size_t k = 0; k < c.added_.size() && k < added.size(); ++k) faces_.insert(added[k].idx(), c.added_[k]);
     touched_cells_.clear();
-    for (const Update& u : updates_)
+    for (const SurfaceChange::Update& u : c.updates_)
     {
         unlink(u.point);
         d2_[u.point] = u.d2;
@@ -268,15 +272,15 @@ void SurfaceDistance::commit(std::span<const Face> added)
         if (std::find(touched_cells_.begin(), touched_cells_.end(), cell) == touched_cells_.end())
             touched_cells_.push_back(cell);
     }
-    for (uint32_t c : touched_cells_) refresh_cell_bound(c);
-    if (!added_box_.empty())
-        lower_bounds_near_added();
-    sum_ += delta_;
-    updates_.clear();
-    removed_faces_.clear();
-    added_.clear();
-    delta_ = 0;
-    next_mark();
+    for (uint32_t cell : touched_cells_) refresh_cell_bound(cell);
+    if (!c.added_box_.empty())
+        lower_bounds_near_added(c);
+    sum_ += c.delta_;
+    ++version_;
+    c.updates_.clear();
+    c.removed_faces_.clear();
+    c.added_.clear();
+    c.delta_ = 0;
 }
 
 SurfaceSums evaluate_surface_distance(const ZomeMesh& mesh, const SurfaceContext& context, const EnergyOptions& options)

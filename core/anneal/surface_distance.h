@@ -13,21 +13,22 @@
 //!     among A and the faces that stay (through a grid of the model's faces);
 //!   - points a face of A comes closer to than their current distance: looked for in the cells of
 //!     points whose largest distance can reach A.
-//! Distances are
-//! computed by one function on the faces' canonical triangles (face_triangles.h) and a minimum
-//! does not depend on the order it is taken in, so the incremental sum equals, bit for bit, the
-//! sum of a fresh reset().
+//! Distances are computed by one function on the faces' canonical triangles (face_triangles.h)
+//! and a minimum does not depend on the order it is taken in, so the incremental sum equals, bit
+//! for bit, the sum of a fresh reset().
 //!
-//! Not thread-safe: simulate() reads, and commit() writes, the per-point state and the face grid
-//! (the annealer calls both inside its commit section).
+//! Threads: simulate() only reads the shared state and writes the caller's SurfaceChange, so any
+//! number may run at once while no commit() or reset() does (the annealer holds its commit lock
+//! shared for simulate() and exclusively for commit()). A SurfaceChange remembers the state's
+//! version(): if another commit came in between, simulate again before committing.
 
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include "core/anneal/element_grid.h"
 #include "core/anneal/energy_options.h"
 #include "core/anneal/energy_samples.h"
-#include "core/anneal/element_grid.h"
 #include "core/anneal/face_shape.h"
 #include "core/anneal/fixed_list.h"
 #include "core/anneal/local_change.h"
@@ -35,6 +36,34 @@
 #include "core/mesh/zome_mesh.h"
 
 namespace zomeify {
+
+//! One thread's simulation of a change: the point updates a commit applies, and scratch.
+class SurfaceChange
+{
+public:
+    EnergyAccumulator delta() const noexcept { return delta_; }
+    //! The SurfaceDistance::version() it was simulated against.
+    uint64_t version() const noexcept { return version_; }
+
+private:
+    friend class SurfaceDistance;
+    struct Update
+    {
+        uint32_t point;
+        uint32_t owner; // a face index, an index into added_ (owner_added), or kNone
+        bool owner_added;
+        double d2, bound;
+    };
+    FixedList<FaceShape, LocalChange::kMaxFaces> added_;
+    Box3 added_box_;
+    FixedList<uint32_t, LocalChange::kMaxFaces> removed_faces_;
+    std::vector<uint32_t> removed_mark_, updated_mark_;
+    uint32_t mark_ = 0;
+    std::vector<Update> updates_;
+    EnergyAccumulator delta_ = 0;
+    uint64_t version_ = ~uint64_t{0};
+    GridVisits visits_;
+};
 
 class SurfaceDistance
 {
@@ -48,16 +77,18 @@ public:
     size_t sample_count() const noexcept { return grid_.size(); }
     //! Σ of the points' values for the mesh of the last reset() and the commits since.
     EnergyAccumulator sum() const noexcept { return sum_; }
+    //! Changes with every commit() and reset().
+    uint64_t version() const noexcept { return version_; }
 
     //! Measures every point against `mesh` from scratch (also after the mesh was compacted: the
     //! owners are face indices).
     void reset(const ZomeMesh& mesh);
-    //! The change of sum() that applying `change` to `mesh` would cause. Remembers what commit()
-    //! needs; valid until the next simulate() or reset().
-    EnergyAccumulator simulate(const ZomeMesh& mesh, const LocalChange& change);
-    //! Applies the last simulated change, after the mesh edit: `added` are the new faces' handles,
-    //! in the order of change.added_faces().
-    void commit(std::span<const Face> added);
+    //! The change of sum() that applying `change` to `mesh` would cause; `out` keeps what
+    //! commit() needs.
+    EnergyAccumulator simulate(const ZomeMesh& mesh, const LocalChange& change, SurfaceChange& out) const;
+    //! Applies a simulated change (simulated against the current version()), after the mesh
+    //! edit: `added` are the new faces' handles, in the order of change.added_faces().
+    void commit(SurfaceChange& change, std::span<const Face> added);
 
     //! The value of one point at squared distance d2 (b0²), capped.
     EnergyFixed value(double d2) const noexcept;
@@ -69,13 +100,6 @@ public:
 
 private:
     static constexpr uint32_t kNone = ~uint32_t{0};
-    struct Update
-    {
-        uint32_t point;
-        uint32_t owner; // a face index, an index into added_ (owner_added), or kNone
-        bool owner_added;
-        double d2, bound;
-    };
     // The nearest face (best, owner) and a lower bound of every other (second).
     struct Nearest
     {
@@ -95,15 +119,18 @@ private:
                 second = d;
         }
     };
-    // Offers the faces of the grid that are not removed and within reach of n.best.
-    void search_grid(const Vec3& p, Nearest& n) const;
-    // Offers the added faces.
-    void search_added(const Vec3& p, Nearest& n) const noexcept;
-    void record(uint32_t point, const Nearest& n);
+    // Offers the faces of the grid that are not removed in `c` and within reach of n.best.
+    void search_grid(const Vec3& p, Nearest& n, SurfaceChange& c) const;
+    // Offers the added faces of `c`.
+    static void search_added(const Vec3& p, Nearest& n, const SurfaceChange& c) noexcept;
+    void record(uint32_t point, const Nearest& n, SurfaceChange& c) const;
     // After a commit: lowers the bound of points an added face came within reach of.
-    void lower_bounds_near_added();
-    void next_mark() noexcept;
-    bool removed(uint32_t face) const noexcept { return face < removed_mark_.size() && removed_mark_[face] == mark_; }
+    void lower_bounds_near_added(const SurfaceChange& c);
+    static void next_mark(SurfaceChange& c) noexcept;
+    static bool removed(const SurfaceChange& c, uint32_t face) noexcept
+    {
+        return face < c.removed_mark_.size() && c.removed_mark_[face] == c.mark_;
+    }
     // The list of points a face owns (intrusive, doubly linked through the points).
     void link(uint32_t point, uint32_t face);
     void unlink(uint32_t point);
@@ -121,16 +148,9 @@ private:
     std::vector<uint32_t> next_owned_, previous_owned_; // per point
     std::vector<double> cell_d2_, cell_bound_; // per sample cell: the largest d2_ and bound_ of its points
     EnergyAccumulator sum_ = 0;
-
-    // The last simulated change.
-    FixedList<FaceShape, LocalChange::kMaxFaces> added_;
-    Box3 added_box_;
-    FixedList<uint32_t, LocalChange::kMaxFaces> removed_faces_;
-    std::vector<uint32_t> removed_mark_, updated_mark_;
-    uint32_t mark_ = 0;
-    std::vector<Update> updates_;
+    uint64_t version_ = 0;
+    SurfaceChange own_; // reset()'s scratch
     std::vector<uint32_t> touched_cells_;
-    EnergyAccumulator delta_ = 0;
 };
 
 //! E_surface's sum and point count for a whole mesh (a fresh SurfaceDistance): {0, 0} when off.

@@ -7,9 +7,11 @@
 //! and yield to the scheduler after `SpinsBeforeYield` rounds, so a holder preempted on an
 //! oversubscribed machine is not starved. Satisfy Lockable (std::lock_guard works).
 //!   SpinLock:   a few dozen nanoseconds held (a hash-table probe)
-//!   CommitLock: up to a few microseconds held (the annealer's commit section)
+//!   CommitLock: up to a few microseconds held (the annealer's commit section), exclusively, or
+//!               shared by readers (lock_shared) that only read what commits write
 
 #include <atomic>
+#include <cstdint>
 #include <thread>
 
 #if defined(__x86_64__) || defined(__i386__)
@@ -52,7 +54,59 @@ private:
     std::atomic<bool> locked_{false};
 };
 
+//! A reader-writer spin lock: lock() is exclusive, lock_shared() lets any number of readers in at
+//! once. A waiting writer keeps new readers out, so commits are not starved by a stream of readers.
+template <int SpinsBeforeYield>
+class BasicSharedSpinLock
+{
+public:
+    void lock() noexcept
+    {
+        int spins = 0;
+        uint32_t s = state_.load(std::memory_order_relaxed);
+        while ((s & kWriter) || !state_.compare_exchange_weak(s, s | kWriter, std::memory_order_acquire,
+                                                                std::memory_order_relaxed))
+        {
+            wait(spins);
+            s = state_.load(std::memory_order_relaxed);
+        }
+        while (state_.load(std::memory_order_acquire) != kWriter) wait(spins); // readers leave
+    }
+    bool try_lock() noexcept
+    {
+        uint32_t s = 0;
+        return state_.compare_exchange_strong(s, kWriter, std::memory_order_acquire, std::memory_order_relaxed);
+    }
+    void unlock() noexcept { state_.fetch_and(~kWriter, std::memory_order_release); }
+
+    void lock_shared() noexcept
+    {
+        int spins = 0;
+        uint32_t s = state_.load(std::memory_order_relaxed);
+        while ((s & kWriter) ||
+               !state_.compare_exchange_weak(s, s + 1, std::memory_order_acquire, std::memory_order_relaxed))
+        {
+            wait(spins);
+            s = state_.load(std::memory_order_relaxed);
+        }
+    }
+    void unlock_shared() noexcept { state_.fetch_sub(1, std::memory_order_release); }
+
+private:
+    static constexpr uint32_t kWriter = 0x80000000U;
+    static void wait(int& spins) noexcept
+    {
+        cpu_relax();
+        if (++spins > SpinsBeforeYield)
+        {
+            std::this_thread::yield();
+            spins = 0;
+        }
+    }
+    std::atomic<uint32_t> state_{0};
+};
+
 using SpinLock = BasicSpinLock<64>;
-using CommitLock = BasicSpinLock<2048>;
+using CommitLock = BasicSharedSpinLock<2048>;
 
 } // namespace zomeify

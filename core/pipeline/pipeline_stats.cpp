@@ -59,7 +59,7 @@ nlohmann::json anneal_json(const AnnealResult& a)
             {"rejections", rejections},
             {"busy_seeds", s.busy_seeds},
             {"dead_seeds", s.dead_seeds},
-            {"lost_races", s.lost_races},
+            {"lost_races", s.lost_races}, {"surface_resimulations", s.surface_resimulations},
             {"garbage_collections", s.garbage_collections},
             {"coverage",
              {{"radius_b0", s.coverage_radius},

@@ -3,6 +3,7 @@
 #include <exception>
 #include <functional>
 #include <optional>
+#include <shared_mutex>
 #include <vector>
 
 #include "core/anneal/engine/annealer_state.h"
@@ -205,7 +206,7 @@ private:
             claims_->release_all();
             return;
         }
-        const EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change);
+        EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change);
         // No commit may add a face turned against the surface (no model gains a fold-over).
         if (!delta.ok() || delta.adds_fold_over)
         {
@@ -216,6 +217,15 @@ private:
         }
         ++counts.valid;
         ++unflushed_valid_;
+        // E_surface reads the faces near the change, which claims do not cover: under the commit
+        // lock held shared, so both threads can simulate while no commit runs.
+        if (s_.energy.surface_enabled())
+        {
+            std::shared_lock lock(s_.commit_lock, std::defer_lock);
+            if (shared_)
+                lock.lock();
+            s_.energy.add_surface_change(s_.mesh, proposal_.change, delta, surface_);
+        }
         // Drawn outside the lock and for every valid proposal, so the random stream does not
         // depend on the outcome.
         const double u = rng_.uniform01();
@@ -230,8 +240,12 @@ private:
     bool commit(EnergyDelta delta, double u)
     {
         std::lock_guard lock(s_.commit_lock);
-        // E_surface reads the whole model's faces near the change, which claims do not cover.
-        s_.energy.add_surface_change(s_.mesh, proposal_.change, delta);
+        // Another thread committed since this one simulated E_surface: again, against the state now.
+        if (!s_.energy.surface_current(surface_))
+        {
+            ++totals_.surface_resimulations;
+            s_.energy.add_surface_change(s_.mesh, proposal_.change, delta, surface_);
+        }
         if (!metropolis_accept(s_.energy.delta_energy(delta), temperature_, u))
             return false;
         const Additions add = additions(proposal_.change);
@@ -263,7 +277,7 @@ private:
         s_.clearance.forget(proposal_.change);
         apply_proposal(s_.mesh, proposal_, &added_faces_);
         s_.clearance.learn(s_.mesh, proposal_.change, std::span<const Face>(added_faces_.begin(), added_faces_.size()));
-        s_.energy.commit(delta, std::span<const Face>(added_faces_.begin(), added_faces_.size()));
+        s_.energy.commit(delta, std::span<const Face>(added_faces_.begin(), added_faces_.size()), surface_);
         s_.published_vertices.store(static_cast<uint32_t>(s_.mesh.vertices_size()), std::memory_order_release);
         if (!s_.has_room_for_any())
             s_.barrier.request();
@@ -292,6 +306,7 @@ private:
     uint64_t tags_generation_ = 0;
     Proposal proposal_;
     FixedList<Face, LocalChange::kMaxFaces> added_faces_;
+    SurfaceChange surface_;
     static constexpr uint64_t kNoEpoch = ~uint64_t{0};
     std::vector<MeshIndex> seeds_; // empty: draw among all nodes
     uint64_t slab_epoch_ = kNoEpoch;

@@ -113,6 +113,7 @@ void add_counts(AnnealStats& into, const AnnealStats& from)
     into.busy_seeds += from.busy_seeds;
     into.dead_seeds += from.dead_seeds;
     into.lost_races += from.lost_races;
+    into.surface_resimulations += from.surface_resimulations;
 }
 
 } // namespace
