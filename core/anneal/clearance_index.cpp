@@ -1,6 +1,8 @@
 #include "core/anneal/clearance_index.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "core/geom/clearance.h"
 #include "core/mesh/circulators.h"
@@ -221,6 +223,101 @@ ClashKind ClearanceIndex::check(const LocalChange& change) const
         if (const ClashKind k = check_panel(p); k != ClashKind::None)
             return k;
     return ClashKind::None;
+}
+
+ClearanceReport ClearanceIndex::audit() const
+{
+    // Clearances are looked for this far (b0); the rules' minimums are well inside it.
+    constexpr double kReach = 1.0;
+    constexpr size_t kExamples = 8;
+    ClearanceReport r;
+    r.ball_ball = r.ball_strut = r.strut_strut = kReach;
+    const auto found = [&](ClashKind kind, const Vec3& a, const Vec3& b, double distance) {
+        ++r.clashes[static_cast<size_t>(kind)];
+        if (r.examples.size() < kExamples)
+            r.examples.push_back({kind, 0.5 * (a + b), distance});
+    };
+    GridVisits visits;
+    for (uint32_t i = 0; i < balls_.capacity(); ++i)
+    {
+        if (!balls_.contains(i))
+            continue;
+        const Ball& ball = balls_[i];
+        balls_.for_each_near(dilated(ball.box, kReach), visits, [&](uint32_t j, const Ball& other) {
+            if (j <= i)
+                return;
+            const double d = (other.p - ball.p).norm();
+            r.ball_ball = std::min(r.ball_ball, d);
+            if (d < kMinBallBall)
+                found(ClashKind::BallBall, ball.p, other.p, d);
+        });
+        struts_.for_each_near(dilated(ball.box, kReach), visits, [&](uint32_t, const Strut& s) {
+            if (s.holds(ball.at))
+                return;
+            const double d = std::sqrt(point_segment_distance_squared(ball.p, s.a, s.b));
+            r.ball_strut = std::min(r.ball_strut, d);
+            if (d < kMinBallStrut)
+                found(ClashKind::BallStrut, ball.p, 0.5 * (s.a + s.b), d);
+        });
+    }
+    for (uint32_t i = 0; i < struts_.capacity(); ++i)
+    {
+        if (!struts_.contains(i))
+            continue;
+        const Strut& strut = struts_[i];
+        struts_.for_each_near(dilated(strut.box, kReach), visits, [&](uint32_t j, const Strut& o) {
+            if (j <= i || strut.shares_ball(o))
+                return;
+            const double d = std::sqrt(segment_segment_distance_squared(strut.a, strut.b, o.a, o.b));
+            r.strut_strut = std::min(r.strut_strut, d);
+            if (d < kMinStrutStrut)
+                found(ClashKind::StrutStrut, 0.5 * (strut.a + strut.b), 0.5 * (o.a + o.b), d);
+        });
+        panels_.for_each_near(strut.box, visits, [&](uint32_t, const Panel& p) {
+            if (!p.has_corner(strut.from) && !p.has_corner(strut.to) && pierces(strut.a, strut.b, p.shape))
+                found(ClashKind::StrutFace, 0.5 * (strut.a + strut.b), p.box.center(), 0.0);
+        });
+    }
+    return r;
+}
+
+ClearanceReport clearance_report(const ZomeMesh& mesh)
+{
+    Box3 box;
+    for (Vertex v : vertices(mesh)) box.extend(to_vec3(mesh.position(v)));
+    ClearanceIndex index(dilated(box, 1.0));
+    index.reset(mesh);
+    return index.audit();
+}
+
+std::string clearance_summary(const ClearanceReport& report)
+{
+    const auto mm = [](double b0) {
+        char text[32];
+        std::snprintf(text, sizeof text, "%.1f mm", b0 * kMmPerB0);
+        return std::string(text);
+    };
+    if (report.total() == 0)
+    {
+        // The tightest spot: the part gap (surface to surface) that is smallest.
+        const double balls = report.ball_ball - kBallDiameterB0;
+        const double ball_strut = report.ball_strut - 0.5 * (kBallDiameterB0 + kStrutThicknessB0);
+        const double struts = report.strut_strut - kStrutThicknessB0;
+        const double gap = std::min({balls, ball_strut, struts});
+        const char* what = gap == balls ? "two balls" : gap == struts ? "two struts" : "a ball and a strut";
+        return "no clashes: the closest parts are " + std::string(what) + " " + mm(gap) + " apart";
+    }
+    static constexpr const char* kWhat[kClashKinds] = {"", "pairs of balls too close", "balls touching a strut",
+                                                      "pairs of struts too close", "struts through a face"};
+    std::string out = std::to_string(report.total()) + (report.total() == 1 ? " clash:" : " clashes:");
+    const char* sep = " ";
+    for (int k = 1; k < kClashKinds; ++k)
+        if (report.clashes[static_cast<size_t>(k)] > 0)
+        {
+            out += sep + std::to_string(report.clashes[static_cast<size_t>(k)]) + " " + kWhat[k];
+            sep = ", ";
+        }
+    return out;
 }
 
 void ClearanceIndex::forget(const LocalChange& change)

@@ -12,6 +12,8 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
+#include <string>
 #include <vector>
 
 #include "core/anneal/element_grid.h"
@@ -34,6 +36,30 @@ enum class ClashKind : uint8_t
 inline constexpr int kClashKinds = 5;
 const char* clash_name(ClashKind kind) noexcept;
 
+//! One clash found in a model: its kind and where (b0 units, the model's own coordinates).
+struct Clash
+{
+    ClashKind kind = ClashKind::None;
+    Vec3 where = Vec3::Zero(); //!< midway between the two parts
+    double distance = 0.0;     //!< between them (b0; 0 for a strut through a face)
+};
+
+//! Every clash of a whole model, and the smallest clearance of each kind (b0): ball centres, ball
+//! centre to a strut it does not hold, struts sharing no ball. A clearance is only looked for up to
+//! about 1 b0; none found nearer reads as that limit.
+struct ClearanceReport
+{
+    std::array<size_t, kClashKinds> clashes{}; //!< per ClashKind (index 0 unused)
+    double ball_ball = 0.0, ball_strut = 0.0, strut_strut = 0.0;
+    std::vector<Clash> examples; //!< the first few, for messages
+    size_t total() const noexcept
+    {
+        size_t n = 0;
+        for (size_t c : clashes) n += c;
+        return n;
+    }
+};
+
 class ClearanceIndex
 {
 public:
@@ -48,6 +74,9 @@ public:
     //! apply_proposal, and learn() after it with the new faces' handles (change.added_faces() order).
     void forget(const LocalChange& change);
     void learn(const ZomeMesh& mesh, const LocalChange& change, std::span<const Face> added_faces);
+
+    //! Every clash among the indexed elements (each pair once), and the smallest clearances.
+    ClearanceReport audit() const;
 
 private:
     struct Ball
@@ -94,5 +123,12 @@ private:
     mutable std::vector<uint32_t> removed_balls_, removed_struts_, removed_panels_;
     mutable uint32_t mark_ = 0;
 };
+
+//! The clearance report of a whole model.
+ClearanceReport clearance_report(const ZomeMesh& mesh);
+
+//! One line for users, in millimetres at real size: "no clashes; the closest parts are two struts
+//! 4.1 mm apart" or "3 clashes: 2 pairs of balls too close, 1 strut through a face".
+std::string clearance_summary(const ClearanceReport& report);
 
 } // namespace zomeify

@@ -38,9 +38,10 @@ Vec3 newell_normal(std::span<const ZVec> corners) noexcept
     for (size_t i = 1; i < k; ++i)
         if (corners[i] < corners[first])
             first = i;
+    std::array<Vec3, 4> p;
+    for (size_t i = 0; i < k && i < p.size(); ++i) p[i] = lattice_sum(corners[(first + i) % k]).divided(1);
     Vec3 newell = Vec3::Zero();
-    for (size_t i = 0; i < k; ++i)
-        newell += lattice_sum(corners[(first + i) % k]).divided(1).cross(lattice_sum(corners[(first + i + 1) % k]).divided(1));
+    for (size_t i = 0; i < k && i < p.size(); ++i) newell += p[i].cross(p[(i + 1) % k]);
     return newell;
 }
 

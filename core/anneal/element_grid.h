@@ -86,6 +86,8 @@ public:
         });
     }
     bool contains(uint32_t index) const noexcept { return index < live_.size() && live_[index]; }
+    //! One past the largest index that may be present.
+    uint32_t capacity() const noexcept { return static_cast<uint32_t>(live_.size()); }
     const T& operator[](uint32_t index) const noexcept { return elements_[index]; }
     size_t size() const noexcept { return size_; }
 

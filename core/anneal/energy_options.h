@@ -56,4 +56,14 @@ struct EnergyOptions
     size_t target_nodes = 0;
 };
 
+//! The paper's energy exactly (§4, design.md §3.3): its weights, no E_surface, no fold-over term.
+inline EnergyOptions paper_energy() noexcept
+{
+    EnergyOptions o;
+    o.w_distance = 10.0;
+    o.w_surface = 0.0;
+    o.w_fold = 0.0;
+    return o;
+}
+
 } // namespace zomeify

@@ -88,6 +88,8 @@ PipelineOptions pipeline_options(const Args &args)
     if (args.has("--operator-weights"))
         a.operator_weights = operator_weights(*args.value("--operator-weights"));
     EnergyOptions &e = a.energy;
+    if (args.has("--paper-energy"))
+        e = paper_energy();
     e.w_distance = args.number("--w-distance", e.w_distance, 0.0, 1e6);
     e.w_orientation = args.number("--w-orientation", e.w_orientation, 0.0, 1e6);
     e.w_fairing = args.number("--w-fairing", e.w_fairing, 0.0, 1e6);
@@ -139,7 +141,8 @@ std::string summary(const std::string &path, const PipelineResult &r, const std:
           << (st.cancelled ? " (cancelled)" : "") << ": " << st.proposals << " proposals, " << st.commits
           << " commits; E " << std::setprecision(4) << r.anneal->start.total << " -> " << r.model_energy.total
           << "; " << r.model.nodes.size() << " balls, " << r.model.struts.size() << " struts, genus "
-          << r.model_genus << ", " << r.fold_overs << (r.fold_overs == 1 ? " fold-over." : " fold-overs.");
+          << r.model_genus << ", " << r.fold_overs << (r.fold_overs == 1 ? " fold-over; " : " fold-overs; ")
+          << clearance_summary(r.clearance) << ".";
     }
     s << " Wrote";
     for (const std::string &out : outputs)
@@ -159,7 +162,7 @@ int cmd_run(const CommandArgs &argv)
                      "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius",
                      "--w-distance", "--w-orientation", "--w-fairing", "--w-complexity", "--w-surface", "--surface-cap",
                      "--surface-spacing", "--surface-zone", "--w-fold"},
-                    {"--initial-only"});
+                    {"--initial-only", "--paper-energy"});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())

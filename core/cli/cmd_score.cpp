@@ -29,6 +29,7 @@ std::string text_report(const ModelScore& s)
                                   std::to_string(s.energy.fairing) + ", complexity " +
                                   std::to_string(s.energy.complexity) + ")");
     line("fold-overs       ", std::to_string(s.fold_overs));
+    line("parts            ", clearance_summary(s.clearance));
     line("RMS distance     ", std::to_string(s.rms_symmetric) + " b0 (model→mesh " +
                                   std::to_string(s.rms_model_to_surface) + ", mesh→model " +
                                   std::to_string(s.rms_surface_to_model) + ")");

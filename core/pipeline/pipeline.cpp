@@ -47,6 +47,7 @@ void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyO
     r.validation = report.message();
     r.model_genus = report.genus;
     r.fold_overs = count_fold_overs(mesh, context);
+    r.clearance = clearance_report(mesh);
     EnergyOptions o = energy;
     o.target_nodes = target_nodes;
     r.model_energy = evaluate_energy(mesh, context, o);

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 
+#include "core/anneal/clearance_index.h"
 #include "core/anneal/engine/annealer.h"
 #include "core/geom/triangle_mesh.h"
 #include "core/voxel/initial_model.h"
@@ -57,6 +58,7 @@ struct PipelineResult
     bool model_valid = false;     //!< `model` passed validate() (closed, Zome rules)
     std::string validation;       //!< validate()'s one-line message
     size_t fold_overs = 0;        //!< faces of `model` facing against the surface normal at π(barycentre)
+    ClearanceReport clearance;    //!< clashes between the parts of `model` and the smallest clearances
     double initial_seconds = 0.0; //!< Z0 build time
     double seconds = 0.0;         //!< whole pipeline wall time
 };

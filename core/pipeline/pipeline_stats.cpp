@@ -18,6 +18,17 @@ nlohmann::json terms_json(const EnergyTerms& t)
             {"faces", t.sums.faces}};
 }
 
+nlohmann::json clearance_json(const ClearanceReport& c)
+{
+    nlohmann::json kinds = nlohmann::json::object();
+    for (int k = 1; k < kClashKinds; ++k)
+        kinds[clash_name(static_cast<ClashKind>(k))] = c.clashes[static_cast<size_t>(k)];
+    return {{"clashes", c.total()},
+            {"by_kind", kinds},
+            {"smallest_b0", {{"ball_ball", c.ball_ball}, {"ball_strut", c.ball_strut}, {"strut_strut", c.strut_strut}}},
+            {"summary", clearance_summary(c)}};
+}
+
 nlohmann::json struts_by_kind(const ZomeModel& m)
 {
     std::map<std::string, size_t> counts;
@@ -93,6 +104,7 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
     j["genus_model"] = r.model_genus;
     j["valid"] = r.model_valid;
     j["fold_overs"] = r.fold_overs;
+    j["clearance"] = clearance_json(r.clearance);
     j["energy"] = {{"start", terms_json(r.anneal ? r.anneal->start : r.model_energy)},
                    {"end", terms_json(r.model_energy)}};
     if (r.anneal)

@@ -73,6 +73,7 @@ ModelScore score_model(const ZomeModel& model, const SurfaceProjector& surface, 
     if (energy.target_nodes == 0) energy.target_nodes = model.nodes.size();
     const SurfaceContext context(surface, model.transform);
     score.energy = evaluate_energy(mesh, context, energy);
+    score.clearance = clearance_report(mesh);
 
     const double scale = model.transform.scale;
     const int m = std::max(1, static_cast<int>(std::lround(std::sqrt(options.samples_per_face))));
@@ -133,6 +134,14 @@ std::string score_json(const ModelScore& score)
                    {"tangential", e.tangential}, {"normal", e.normal},     {"fairing", e.fairing},
                    {"complexity", e.complexity}};
     j["fold_overs"] = score.fold_overs;
+    const ClearanceReport& c = score.clearance;
+    nlohmann::ordered_json clashes;
+    for (int k = 1; k < kClashKinds; ++k)
+        clashes[clash_name(static_cast<ClashKind>(k))] = c.clashes[static_cast<size_t>(k)];
+    j["clearance"] = {{"clashes", c.total()},
+                      {"by_kind", clashes},
+                      {"smallest_b0", {{"ball_ball", c.ball_ball}, {"ball_strut", c.ball_strut}, {"strut_strut", c.strut_strut}}},
+                      {"summary", clearance_summary(c)}};
     j["distance_b0"] = {{"rms_model_to_surface", score.rms_model_to_surface},
                         {"rms_surface_to_model", score.rms_surface_to_model},
                         {"rms_symmetric", score.rms_symmetric},

@@ -7,6 +7,7 @@
 #include <array>
 #include <string>
 
+#include "core/anneal/clearance_index.h"
 #include "core/anneal/energy_options.h"
 #include "core/anneal/energy_sums.h"
 #include "core/geom/closest_point.h"
@@ -25,6 +26,7 @@ struct ModelScore
     double rms_model_to_surface = 0.0, rms_surface_to_model = 0.0;
     double rms_symmetric = 0.0;  //!< sqrt of the mean of both mean squared distances
     double hausdorff = 0.0;      //!< max over both sample sets
+    ClearanceReport clearance;   //!< clashes between parts and the smallest clearances
 };
 
 struct ScoreOptions

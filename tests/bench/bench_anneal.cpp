@@ -6,6 +6,11 @@
 //   bench_anneal quality [S1 S2 THREADS]  the energy reached in S1 and in S2 seconds (default 30
 //                                         and 300, 2 threads), with energy-vs-time points
 //                                         (every 0.5 s) to plot
+//   bench_anneal compare [SECONDS ROUNDS] proposals/s on one thread with the defaults against the
+//                                         paper's energy without the clearance rule (what the
+//                                         annealer did before E_surface and clearances), ROUNDS
+//                                         alternating pairs of SECONDS-long runs (default 5 s, 5):
+//                                         the ratio of each pair and their median
 //   bench_anneal seeding [PROPOSALS N]    the final energy with seeds from sweeping slabs and with
 //                                         seeds drawn uniformly (the paper's way), one thread, a
 //                                         budget of PROPOSALS (default 2e7), seeds 1..N (default 3):
@@ -105,6 +110,46 @@ nlohmann::json throughput(const Scene& s, double seconds)
     return runs;
 }
 
+// One-thread proposals per CPU second of a SECONDS-long run with `o`.
+double rate(const Scene& s, AnnealOptions o, double seconds)
+{
+    const SurfaceContext context(*s.projector, s.z0.transform);
+    o.threads = 1;
+    o.seconds = seconds;
+    o.seed = 1;
+    o.target_nodes = kTargetNodes;
+    Annealer annealer(s.z0, context, o);
+    const double cpu0 = cpu_seconds();
+    const AnnealResult r = annealer.run();
+    const double cpu = cpu_seconds() - cpu0;
+    return cpu > 0 ? static_cast<double>(r.stats.proposals) / cpu : 0.0;
+}
+
+nlohmann::json compare(const Scene& s, double seconds, int rounds)
+{
+    AnnealOptions before;
+    before.energy = paper_energy();
+    before.clearance = false;
+    nlohmann::json pairs = nlohmann::json::array();
+    std::vector<double> ratios;
+    for (int i = 0; i < rounds; ++i)
+    {
+        // Alternate which goes first, so a drift of the host's speed falls on both alike.
+        const bool defaults_first = i % 2 == 1;
+        double now = 0.0, paper = 0.0;
+        if (defaults_first)
+            now = rate(s, AnnealOptions{}, seconds);
+        paper = rate(s, before, seconds);
+        if (!defaults_first)
+            now = rate(s, AnnealOptions{}, seconds);
+        ratios.push_back(paper > 0 ? now / paper : 0.0);
+        pairs.push_back({{"defaults_per_cpu_second", now}, {"paper_per_cpu_second", paper}, {"ratio", ratios.back()}});
+    }
+    std::sort(ratios.begin(), ratios.end());
+    return {{"pairs", pairs}, {"median_ratio", ratios[ratios.size() / 2]}, {"min_ratio", ratios.front()},
+            {"max_ratio", ratios.back()}};
+}
+
 nlohmann::json quality_run(const Scene& s, double seconds, int threads)
 {
     const SurfaceContext context(*s.projector, s.z0.transform);
@@ -188,6 +233,14 @@ static int run_bench(int argc, char** argv)
         const double e2 = j["long"]["energy_end"]["total"].get<double>();
         j["short_over_long"] = e2 > 0 ? e1 / e2 : 0.0;
     }
+    else if (mode == "compare")
+    {
+        const double seconds = argc > 2 ? bench::positive_argument(argv[2], "SECONDS") : 5.0;
+        const int rounds = argc > 3 ? static_cast<int>(bench::positive_argument(argv[3], "ROUNDS")) : 5;
+        j["mode"] = "compare";
+        j["seconds_per_run"] = seconds;
+        j["compare"] = compare(s, seconds, std::max(rounds, 1));
+    }
     else if (mode == "seeding")
     {
         const double proposals = argc > 2 ? bench::positive_argument(argv[2], "PROPOSALS") : 2e7;
@@ -200,7 +253,7 @@ static int run_bench(int argc, char** argv)
         // `bench_anneal throughput [SECONDS]` or `bench_anneal SECONDS`; anything else is an error.
         const double seconds = mode == "throughput"
                                    ? (argc > 2 ? bench::positive_argument(argv[2], "SECONDS") : 5.0)
-                                   : bench::positive_argument(argv[1], "the mode (throughput, quality, seeding) or SECONDS");
+                                   : bench::positive_argument(argv[1], "the mode (throughput, compare, quality, seeding) or SECONDS");
         j["mode"] = "throughput";
         j["seconds_per_run"] = seconds;
         j["runs"] = throughput(s, seconds > 0 ? seconds : 5.0);
