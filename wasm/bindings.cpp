@@ -170,6 +170,7 @@ EMSCRIPTEN_BINDINGS(zomeify_web)
         .function("link", &WebSession::link)
         .function("summary", &WebSession::summary);
     emscripten::function("maxThreads", &max_threads);
+    emscripten::function("defaultRunOptions", &default_run_options_json);
     emscripten::function("threadedBuild", &threaded_build);
 }
 

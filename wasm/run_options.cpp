@@ -49,12 +49,33 @@ RunOptions parse_run_options(const std::string &json)
         const nlohmann::json &w = j.at("weights");
         if (!w.is_object())
             throw InvalidInputError("run option 'weights' must be an object");
-        o.w_dist = number_in(w, "dist", o.w_dist, 0, 1e6);
-        o.w_orient = number_in(w, "orient", o.w_orient, 0, 1e6);
-        o.w_fair = number_in(w, "fair", o.w_fair, 0, 1e6);
-        o.w_complex = number_in(w, "complex", o.w_complex, 0, 1e6);
+        EnergyOptions& e = o.energy;
+        e.w_distance = number_in(w, "dist", e.w_distance, 0, 1e6);
+        e.w_orientation = number_in(w, "orient", e.w_orientation, 0, 1e6);
+        e.w_fairing = number_in(w, "fair", e.w_fairing, 0, 1e6);
+        e.w_complexity = number_in(w, "complex", e.w_complexity, 0, 1e6);
+        e.w_surface = number_in(w, "surface", e.w_surface, 0, 1e6);
+        e.w_fold = number_in(w, "fold", e.w_fold, 0, 1e6);
     }
     return o;
+}
+
+std::string default_run_options_json()
+{
+    const RunOptions o;
+    const EnergyOptions& e = o.energy;
+    nlohmann::json j = {{"resolution", o.resolution},
+                        {"seconds", o.seconds},
+                        {"threads", o.threads},
+                        {"seed", o.seed},
+                        {"weights",
+                         {{"dist", e.w_distance},
+                          {"orient", e.w_orientation},
+                          {"fair", e.w_fairing},
+                          {"complex", e.w_complexity},
+                          {"surface", e.w_surface},
+                          {"fold", e.w_fold}}}};
+    return j.dump();
 }
 
 int max_run_threads()

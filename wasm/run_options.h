@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <string>
 
+#include "core/anneal/energy_options.h"
+
 namespace zomeify::web
 {
 
@@ -19,18 +21,19 @@ struct RunOptions
     long long target_nodes = 0; //!< N_target; 0 = the node count of Z0
     int threads = 1;            //!< annealing threads (clamped to what the build offers)
     uint64_t seed = 1;
-    // Energy weights (design.md §3.3); the page folds them away under "advanced".
-    double w_dist = 10.0;
-    double w_orient = 100.0;
-    double w_fair = 5.0;
-    double w_complex = 1.0;
+    //! The energy's weights, the core's defaults unless the page sends others (it folds them away
+    //! under "advanced" and reads their defaults from default_run_options_json()).
+    EnergyOptions energy;
 };
 
 //! Parses a JSON object with any of the keys resolution, seconds, proposals, initial_only,
 //! target_nodes, threads, seed,
-//! weights {dist, orient, fair, complex}; missing keys keep their defaults. Throws
+//! weights {dist, orient, fair, complex, surface, fold}; missing keys keep their defaults. Throws
 //! InvalidInputError with a one-line message for a value of the wrong type or out of range.
 RunOptions parse_run_options(const std::string &json);
+
+//! RunOptions{} as the JSON parse_run_options() reads (the page's form starts from it).
+std::string default_run_options_json();
 
 //! The largest number of annealing threads this build can start without deadlocking
 //! (PTHREAD_POOL_SIZE minus the run's own thread; 1 in the single-threaded build).

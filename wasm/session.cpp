@@ -238,10 +238,7 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
         a.threads = std::clamp(options.threads, 1, max_run_threads());
         a.seed = options.seed;
         a.target_nodes = static_cast<size_t>(options.target_nodes);
-        a.energy.w_distance = options.w_dist;
-        a.energy.w_orientation = options.w_orient;
-        a.energy.w_fairing = options.w_fair;
-        a.energy.w_complexity = options.w_complex;
+        a.energy = options.energy;
         a.progress_interval = 0.1;
         control.update(
             [&](RunProgress &p)

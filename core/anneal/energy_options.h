@@ -23,24 +23,27 @@ struct ForbiddenZone
 //!     + w_surface·E_surface + w_fold·(number of fold-over faces).
 struct EnergyOptions
 {
-    double w_distance = 10.0;   //!< paper §4 / design §3.3
+    //! The paper's weights are 10, 100, 5, 1 (§4, design §3.3; paper_energy()); E_dist counts 3×
+    //! the paper's here, which with E_surface brings the model closer to S both ways (engine
+    //! README, "Energy").
+    double w_distance = 30.0;
     double w_orientation = 100.0;
     double w_fairing = 5.0;
     double w_complexity = 1.0;
     //! The surface's distance to the model (surface_distance.h; not in the paper, whose energy is
     //! this one with w_surface = 0): E_dist measures how far the model is from S, never how far S
     //! is from the model, so without it a model may leave thin parts of S behind.
-    double w_surface = 0.0;
+    double w_surface = 100.0;
     //! Spacing of the points on S that E_surface measures from (b0 units).
     double surface_spacing = 0.5;
     //! A point of S farther than this from every face counts as this far (b0 units), so a change
     //! only alters the points within this reach of the faces it removes or adds.
-    double surface_cap = 1.5;
+    double surface_cap = 0.75;
     //! A point's value is d²·(1 + F(d)) with this zone (f_max = 0: plain d²).
     ForbiddenZone surface_zone{0.25, 1.0, 0.0};
     //! Energy per fold-over face (a face turned against the surface normal at its barycentre).
     //! No commit may add one; this makes removing those of the starting model pay.
-    double w_fold = 0.0;
+    double w_fold = 1.0;
 
     //! Samples inside S: d_min = b0/3, d_max = 1.5·b0, F_max = 35 (penalises the interior most).
     ForbiddenZone inside{1.0 / 3.0, 1.5, 35.0};

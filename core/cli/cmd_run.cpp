@@ -142,7 +142,7 @@ std::string summary(const std::string &path, const PipelineResult &r, const std:
           << " commits; E " << std::setprecision(4) << r.anneal->start.total << " -> " << r.model_energy.total
           << "; " << r.model.nodes.size() << " balls, " << r.model.struts.size() << " struts, genus "
           << r.model_genus << ", " << r.fold_overs << (r.fold_overs == 1 ? " fold-over; " : " fold-overs; ")
-          << clearance_summary(r.clearance) << ".";
+          << clearance_summary(r.clearance) << "; " << fidelity_summary(r.fidelity) << ".";
     }
     s << " Wrote";
     for (const std::string &out : outputs)

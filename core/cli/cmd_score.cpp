@@ -1,8 +1,11 @@
-// zomeify score MODEL --mesh MESH [--b0 LENGTH] [--json]: how well a Zome model approximates a
-// mesh, measured the same way for any model (energy terms, fold-overs, symmetric distance in b0).
+// zomeify score MODEL --mesh MESH [--b0 LENGTH] [--samples N] [--json]: how well a Zome model
+// approximates a mesh, measured the same way for any model (energy terms, fold-overs, distances
+// both ways in b0 and mm with where the largest gap is, clashes between parts).
 // A model without a placement (a .vef from vZome) needs --b0, the mesh length of one b0 strut; its
 // translation is then fitted. A model without faces gets them recovered from its struts.
+#include <iomanip>
 #include <iostream>
+#include <sstream>
 
 #include "core/base/errors.h"
 #include "core/cli/args.h"
@@ -12,9 +15,17 @@
 #include "core/score/fit_translation.h"
 #include "core/score/model_score.h"
 #include "core/surface/prepare.h"
+#include "core/zome/real_sizes.h"
 
 namespace zomeify::cli {
 namespace {
+
+std::string fixed(double x, int digits)
+{
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(digits) << x;
+    return s.str();
+}
 
 std::string text_report(const ModelScore& s)
 {
@@ -30,10 +41,17 @@ std::string text_report(const ModelScore& s)
                                   std::to_string(s.energy.complexity) + ")");
     line("fold-overs       ", std::to_string(s.fold_overs));
     line("parts            ", clearance_summary(s.clearance));
-    line("RMS distance     ", std::to_string(s.rms_symmetric) + " b0 (model→mesh " +
-                                  std::to_string(s.rms_model_to_surface) + ", mesh→model " +
-                                  std::to_string(s.rms_surface_to_model) + ")");
-    line("Hausdorff        ", std::to_string(s.hausdorff) + " b0");
+    const Fidelity& f = s.fidelity;
+    const auto both = [](double b0) { return fixed(b0, 3) + " b0 = " + fixed(b0 * kMmPerB0, 1) + " mm"; };
+    line("RMS distance     ", both(f.rms_symmetric) + " (model→mesh " + both(f.model_to_surface.rms) +
+                                  ", mesh→model " + both(f.surface_to_model.rms) + ")");
+    line("largest distance ", "model→mesh " + both(f.model_to_surface.max) + ", mesh→model " +
+                                  both(f.surface_to_model.max));
+    line("Hausdorff        ", both(f.hausdorff) + ", " +
+                                  (f.gap_is_missed_surface ? "where the model misses the mesh" : "where the model stands off the mesh") +
+                                  (f.where == "middle" ? ", in the middle" : ", at the " + f.where) + " (" +
+                                  fixed(f.largest_gap_at.x(), 4) + ", " + fixed(f.largest_gap_at.y(), 4) + ", " +
+                                  fixed(f.largest_gap_at.z(), 4) + ")");
     return out;
 }
 
@@ -41,8 +59,8 @@ std::string text_report(const ModelScore& s)
 
 int cmd_score(const CommandArgs& argv)
 {
-    const Args args(argv, {"--mesh", "--b0"}, {"--json"});
-    args.expect_positional(1, "one model file: zomeify score MODEL --mesh MESH [--b0 LENGTH] [--json]");
+    const Args args(argv, {"--mesh", "--b0", "--samples"}, {"--json"});
+    args.expect_positional(1, "one model file: zomeify score MODEL --mesh MESH [--b0 LENGTH] [--samples N] [--json]");
     const auto mesh_path = args.value("--mesh");
     if (!mesh_path) throw InvalidInputError("--mesh MESH is required: the surface to score the model against");
     ZomeModel model = read_model_file(args.positional()[0]);
@@ -67,7 +85,9 @@ int cmd_score(const CommandArgs& argv)
         if (!faces.ok) throw InvalidInputError("cannot recover the model's faces: " + faces.error);
         model.faces = std::move(faces.faces);
     }
-    const ModelScore score = score_model(model, surface);
+    ScoreOptions options;
+    options.fidelity.samples_per_side = static_cast<int>(args.integer("--samples", 50000, 100, 10000000));
+    const ModelScore score = score_model(model, surface, options);
     std::cout << (args.has("--json") ? score_json(score) + "\n" : text_report(score));
     return 0;
 }

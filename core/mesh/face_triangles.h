@@ -4,10 +4,13 @@
 //! crosses it, the fidelity score). A quad of Zome struts need not be planar, so its surface is
 //! defined by one of its diagonals; which one must not depend on the corner a caller starts from,
 //! or the same face would give different distances when counted from the mesh and from an
-//! operator's description. Rule: rotate the corners so the smallest (ZVec order) comes first, then
-//! fan from it: (c0, c1, c2) and, for a quad, (c0, c2, c3). Orientation is kept (counter-clockwise
-//! seen from outside), and every caller gets the same corners in the same order, so floating-point
-//! results are bit-identical too.
+//! operator's description. Rule: the shorter diagonal (exact lengths; the flatter, more compact
+//! split of a skew quad, and the one a person would stretch a panel over), and for equal ones the
+//! diagonal through the smallest corner (ZVec order). The corners are rotated so that the
+//! diagonal's smaller end comes first, then fanned: (c0, c1, c2) and (c0, c2, c3); a triangle
+//! starts at its smallest corner. Orientation is kept (counter-clockwise seen from outside), and
+//! every caller gets the same corners in the same order, so floating-point results are
+//! bit-identical too.
 
 #include <array>
 #include <cstddef>
@@ -34,6 +37,13 @@ inline FaceTriangles face_triangles(std::span<const ZVec> corners) noexcept
     for (size_t i = 1; i < n; ++i)
         if (corners[i] < corners[first])
             first = i;
+    if (n == 4)
+    {
+        // Diagonal 0–2 or 1–3 (by index): keep the shorter, then start at its smaller end.
+        const int order = compare(norm4(corners[2] - corners[0]), norm4(corners[3] - corners[1]));
+        const size_t d = order < 0 ? 0 : order > 0 ? 1 : first % 2;
+        first = corners[d + 2] < corners[d] ? d + 2 : d;
+    }
     const auto at = [&](size_t k) -> const ZVec& { return corners[(first + k) % n]; };
     out.triangles[0] = {at(0), at(1), at(2)};
     if (n == 4)

@@ -39,7 +39,8 @@ std::string genus_advice(const TriangleMesh& surface, long long surface_genus, c
 }
 
 // Closedness, Zome rules, genus, fold-overs and energy of the model to be written.
-void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyOptions& energy, size_t target_nodes)
+void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyOptions& energy, size_t target_nodes,
+                 int fidelity_samples)
 {
     const ZomeMesh mesh = from_model(r.model);
     const ValidationReport report = validate(mesh);
@@ -48,6 +49,12 @@ void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyO
     r.model_genus = report.genus;
     r.fold_overs = count_fold_overs(mesh, context);
     r.clearance = clearance_report(mesh);
+    if (r.model_valid && fidelity_samples > 0)
+    {
+        FidelityOptions fidelity;
+        fidelity.samples_per_side = fidelity_samples;
+        r.fidelity = measure_fidelity(r.model, context.projector(), fidelity);
+    }
     EnergyOptions o = energy;
     o.target_nodes = target_nodes;
     r.model_energy = evaluate_energy(mesh, context, o);
@@ -118,7 +125,8 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
         r.model = r.anneal->stats.cancelled ? r.anneal->best_model : r.anneal->model;
     }
     check_model(r, context, options.anneal.energy,
-                options.anneal.target_nodes ? options.anneal.target_nodes : r.initial.model.nodes.size());
+                options.anneal.target_nodes ? options.anneal.target_nodes : r.initial.model.nodes.size(),
+                options.fidelity_samples);
     r.seconds = clock.seconds();
     return r;
 }

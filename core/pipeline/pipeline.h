@@ -12,6 +12,7 @@
 #include "core/anneal/clearance_index.h"
 #include "core/anneal/engine/annealer.h"
 #include "core/geom/triangle_mesh.h"
+#include "core/score/fidelity.h"
 #include "core/voxel/initial_model.h"
 #include "core/zome/model.h"
 
@@ -29,6 +30,8 @@ struct PipelineOptions
     //! advisor_seconds) and put the hint in PipelineResult::advice.
     bool advise = true;
     double advisor_seconds = 10.0;
+    //! Points per side for the fidelity figures of the result (fidelity.h).
+    int fidelity_samples = 50000;
     AnnealOptions anneal;
 };
 
@@ -59,6 +62,7 @@ struct PipelineResult
     std::string validation;       //!< validate()'s one-line message
     size_t fold_overs = 0;        //!< faces of `model` facing against the surface normal at π(barycentre)
     ClearanceReport clearance;    //!< clashes between the parts of `model` and the smallest clearances
+    Fidelity fidelity;            //!< distances between `model` and the surface, both ways (core/score)
     double initial_seconds = 0.0; //!< Z0 build time
     double seconds = 0.0;         //!< whole pipeline wall time
 };

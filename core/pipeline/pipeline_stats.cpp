@@ -105,6 +105,8 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
     j["valid"] = r.model_valid;
     j["fold_overs"] = r.fold_overs;
     j["clearance"] = clearance_json(r.clearance);
+    if (r.model_valid)
+        j["fidelity"] = fidelity_json(r.fidelity);
     j["energy"] = {{"start", terms_json(r.anneal ? r.anneal->start : r.model_energy)},
                    {"end", terms_json(r.model_energy)}};
     if (r.anneal)

@@ -11,6 +11,7 @@
 #include "core/anneal/energy_options.h"
 #include "core/anneal/energy_sums.h"
 #include "core/geom/closest_point.h"
+#include "core/score/fidelity.h"
 #include "core/zome/model.h"
 #include "core/zome/slots.h"
 
@@ -23,16 +24,14 @@ struct ModelScore
     int genus = 0;
     EnergyTerms energy;          //!< with target_nodes = the model's own node count unless given
     size_t fold_overs = 0;       //!< faces whose normal points against S's normal at π(barycentre)
-    double rms_model_to_surface = 0.0, rms_surface_to_model = 0.0;
-    double rms_symmetric = 0.0;  //!< sqrt of the mean of both mean squared distances
-    double hausdorff = 0.0;      //!< max over both sample sets
+    Fidelity fidelity;           //!< distances both ways, in b0 (fidelity.h)
     ClearanceReport clearance;   //!< clashes between parts and the smallest clearances
 };
 
 struct ScoreOptions
 {
     EnergyOptions energy;        //!< energy.target_nodes = 0 → the model's node count
-    int samples_per_face = 16;   //!< area samples per model face (plus its corners)
+    FidelityOptions fidelity;
 };
 
 //! Scores a model with faces (counter-clockwise from outside) placed on S by model.transform.

@@ -42,8 +42,8 @@ TEST(ModelScore, ModelOnItsOwnSurfaceIsAtDistanceZero)
     EXPECT_EQ(s.faces, model.faces.size());
     EXPECT_EQ(s.genus, 1);
     EXPECT_EQ(s.fold_overs, 0u);
-    EXPECT_LT(s.rms_symmetric, 1e-9);
-    EXPECT_LT(s.hausdorff, 1e-9);
+    EXPECT_LT(s.fidelity.rms_symmetric, 1e-9);
+    EXPECT_LT(s.fidelity.hausdorff, 1e-9);
     EXPECT_NEAR(s.energy.distance, 0.0, 1e-12);
     size_t by_kind = 0;
     for (size_t n : s.struts_by_kind) by_kind += n;
@@ -67,8 +67,8 @@ TEST(ModelScore, ShiftedSurfaceGivesThatDistance)
     ZomeModel moved = model;
     moved.transform.translation[0] += 0.25 * 0.1; // ... model moved by 0.1 b0 along x
     const ModelScore s = score_model(moved, SurfaceProjector(shifted));
-    EXPECT_GT(s.hausdorff, 0.099);
-    EXPECT_LT(s.hausdorff, 0.101);
+    EXPECT_GT(s.fidelity.hausdorff, 0.099);
+    EXPECT_LT(s.fidelity.hausdorff, 0.101);
 }
 
 TEST(ModelScore, FacelessModelIsRefused)

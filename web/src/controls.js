@@ -1,8 +1,9 @@
 // The run controls: resolution with a live estimate (and the advisor's warning), time presets,
 // target complexity, threads, advanced weights and seed. Reads them as protocol RunOptions.
 export const PRESETS = { quick: 5, standard: 30, thorough: 120 };
+// The core's defaults replace these weights at start-up (setDefaults), so the page runs what the CLI does.
 const DEFAULTS = { resolution: 12, preset: 'quick', seconds: 5, target_nodes: 0, threads: 0, seed: 1,
-  weights: { dist: 10, orient: 100, fair: 5, complex: 1 } };
+  weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } };
 
 // The controls' arithmetic and text, kept pure (no DOM) so web/tests/ can check it.
 
@@ -45,6 +46,15 @@ export class Controls {
     });
     this.el('preset').addEventListener('change', () => this.presetChanged());
     this.set(DEFAULTS);
+  }
+
+  /** The core's default weights (from the wasm module): the form's starting values. */
+  setDefaults(defaults) {
+    if (!defaults || !defaults.weights) return;
+    for (const k of Object.keys(DEFAULTS.weights)) {
+      if (Number.isFinite(defaults.weights[k])) DEFAULTS.weights[k] = defaults.weights[k];
+    }
+    this.set({ weights: DEFAULTS.weights });
   }
 
   setMaxThreads(n) {

@@ -72,6 +72,7 @@ async function boot() {
   const started = await bridge.start();
   Object.assign(info, started);
   controls.setMaxThreads(started.maxThreads);
+  if (started.defaults) controls.setDefaults(started.defaults);
   if (!info.crossOriginIsolated) {
     $('fallback-note').hidden = false;
   }

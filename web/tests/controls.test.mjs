@@ -50,10 +50,21 @@ test('auto threads: all cores but one, at least 1, at most the build\'s maximum'
   assert.equal(autoThreadCount(16, 1), 1); // single-threaded build
 });
 
+test("the core's default weights (sent at start-up) become the form's", () => {
+  const { controls } = makeControls();
+  controls.setDefaults({ weights: { dist: 12, surface: 7, unknown: 3, fold: 'x' } });
+  const w = controls.get().weights;
+  assert.equal(w.dist, 12);
+  assert.equal(w.surface, 7);
+  assert.equal(w.fold, 1); // not a number: the page's own default stays
+  assert.equal(w.unknown, undefined);
+  controls.setDefaults({ weights: { dist: 30, surface: 100 } }); // DEFAULTS are module state: put them back
+});
+
 test('the form read as RunOptions: defaults, and empty or bad fields fall back', () => {
   const { controls, el } = makeControls();
   assert.deepEqual(controls.get(), { resolution: 12, seconds: 5, target_nodes: 0, threads: 2, seed: 1, proposals: 0,
-    initial_only: false, weights: { dist: 10, orient: 100, fair: 5, complex: 1 } });
+    initial_only: false, weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } });
   el('seed').value = '';
   el('w-fair').value = 'abc';
   el('threads').value = '9'; // more than the build has

@@ -48,7 +48,8 @@ test('a failed init rejects and also raises the fatal event with the same messag
 });
 
 test('init loads the single-threaded module when not threaded', async () => {
-  assert.deepEqual(await bridge.request('init', { wasmBase, threaded: false }), { threaded: false, maxThreads: 1 });
+  assert.deepEqual(await bridge.request('init', { wasmBase, threaded: false }),
+    { threaded: false, maxThreads: 1, defaults: { resolution: 12, weights: { dist: 30, surface: 100 } } });
 });
 
 test('every request gets exactly one reply, with its own id', () => {
@@ -108,7 +109,8 @@ test('single-threaded run: options reach the core unchanged; progress and a chan
 });
 
 test('threaded run: a second run is refused, cancel stops the first with state "cancelled"', async () => {
-  assert.deepEqual(await bridge.request('init', { wasmBase, threaded: true }), { threaded: true, maxThreads: 4 });
+  assert.deepEqual(await bridge.request('init', { wasmBase, threaded: true }),
+    { threaded: true, maxThreads: 4, defaults: { resolution: 12, weights: { dist: 30, surface: 100 } } });
   const first = bridge.run({ seconds: 30 });
   await assert.rejects(bridge.run({ seconds: 30 }), { message: 'a run is in progress' });
   await new Promise((resolve) => setTimeout(resolve, 250)); // a couple of 100 ms progress polls

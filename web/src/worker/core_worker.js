@@ -48,7 +48,7 @@ async function init({ wasmBase, threaded: wantThreads }) {
     printErr: (t) => console.warn('[core]', t),
   });
   session = new core.Session();
-  return { threaded: core.threadedBuild(), maxThreads: core.maxThreads() };
+  return { threaded: core.threadedBuild(), maxThreads: core.maxThreads(), defaults: JSON.parse(core.defaultRunOptions()) };
 }
 
 function runThreaded(options) {
