@@ -120,6 +120,36 @@ void ClearanceIndex::reset(const ZomeMesh& mesh)
     }
 }
 
+void ClearanceIndex::reset(const ZomeModel& model)
+{
+    balls_.clear();
+    struts_.clear();
+    panels_.clear();
+    const size_t n = model.nodes.size();
+    for (size_t i = 0; i < n; ++i) balls_.insert(static_cast<uint32_t>(i), make_ball(model.nodes[i]));
+    for (size_t i = 0; i < model.struts.size(); ++i)
+    {
+        const auto& s = model.struts[i];
+        if (s[0] < n && s[1] < n)
+            struts_.insert(static_cast<uint32_t>(i), make_strut(model.nodes[s[0]], model.nodes[s[1]]));
+    }
+    for (size_t i = 0; i < model.faces.size(); ++i)
+    {
+        const auto& f = model.faces[i];
+        if (f.size() != 3 && f.size() != 4)
+            continue;
+        std::array<ZVec, 4> corners;
+        bool ok = true;
+        for (size_t k = 0; k < f.size(); ++k)
+        {
+            ok = ok && f[k] < n;
+            corners[k] = ok ? model.nodes[f[k]] : ZVec{};
+        }
+        if (ok)
+            panels_.insert(static_cast<uint32_t>(i), make_panel(std::span<const ZVec>(corners.data(), f.size())));
+    }
+}
+
 ClashKind ClearanceIndex::check_ball(const Ball& ball) const
 {
     ClashKind found = ClashKind::None;
@@ -287,6 +317,15 @@ ClearanceReport clearance_report(const ZomeMesh& mesh)
     for (Vertex v : vertices(mesh)) box.extend(to_vec3(mesh.position(v)));
     ClearanceIndex index(dilated(box, 1.0));
     index.reset(mesh);
+    return index.audit();
+}
+
+ClearanceReport clearance_report(const ZomeModel& model)
+{
+    Box3 box;
+    for (const ZVec& p : model.nodes) box.extend(to_vec3(p));
+    ClearanceIndex index(dilated(box, 1.0));
+    index.reset(model);
     return index.audit();
 }
 

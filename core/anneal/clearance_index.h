@@ -21,6 +21,7 @@
 #include "core/anneal/fixed_list.h"
 #include "core/anneal/local_change.h"
 #include "core/mesh/zome_mesh.h"
+#include "core/zome/model.h"
 
 namespace zomeify {
 
@@ -68,6 +69,8 @@ public:
 
     //! Indexes every element of `mesh` (also after a compaction renumbered them).
     void reset(const ZomeMesh& mesh);
+    //! Indexes a model as it is (balls, struts, and faces if it has them), valid or not.
+    void reset(const ZomeModel& model);
     //! The first clash that applying `change` would create, or None.
     ClashKind check(const LocalChange& change) const;
     //! Keeps the grids in step with an applied change: call forget() with the mesh before
@@ -124,8 +127,10 @@ private:
     mutable uint32_t mark_ = 0;
 };
 
-//! The clearance report of a whole model.
+//! The clearance report of a whole model (a model without faces is checked for ball and strut
+//! clearances only).
 ClearanceReport clearance_report(const ZomeMesh& mesh);
+ClearanceReport clearance_report(const ZomeModel& model);
 
 //! One line for users, in millimetres at real size: "no clashes; the closest parts are two struts
 //! 4.1 mm apart" or "3 clashes: 2 pairs of balls too close, 1 strut through a face".

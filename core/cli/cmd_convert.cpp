@@ -4,6 +4,7 @@
 #include "core/base/errors.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
+#include "core/cli/model_input.h"
 #include "core/io/model_io.h"
 
 namespace zomeify::cli {
@@ -15,7 +16,8 @@ int cmd_convert(const CommandArgs& argv)
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())
         throw InvalidInputError("missing -o OUT");
-    const ZomeModel model = read_model_file(args.positional()[0]);
+    for (const std::string& out : outputs) check_writable_model_name(out);
+    const ZomeModel model = read_model_warning_of_clashes(args.positional()[0]);
     for (const std::string& out : outputs)
     {
         write_model_file(out, model);

@@ -5,6 +5,7 @@
 #include "core/base/errors.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
+#include "core/cli/model_input.h"
 #include "core/io/model_io.h"
 #include "core/io/share_link.h"
 
@@ -31,7 +32,7 @@ int cmd_link(const CommandArgs& argv)
     args.expect_positional(1, "one model file: zomeify link MODEL");
     if (args.has("-o"))
         throw InvalidInputError("-o goes with --decode");
-    std::cout << encode_share_link(read_model_file(args.positional()[0])) << "\n";
+    std::cout << encode_share_link(read_model_warning_of_clashes(args.positional()[0])) << "\n";
     return 0;
 }
 

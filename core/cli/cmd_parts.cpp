@@ -5,6 +5,7 @@
 #include "core/base/errors.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
+#include "core/cli/model_input.h"
 #include "core/io/model_io.h"
 #include "core/parts/parts_report.h"
 
@@ -17,7 +18,7 @@ int cmd_parts(const CommandArgs& argv)
     if (args.has("--json") && args.has("--csv"))
         throw InvalidInputError("choose one of --json and --csv");
     const OwnedKits owned = parse_owned_kits(args.value("--have").value_or(""));
-    const PartsList parts = parts_list(read_model_file(args.positional()[0]));
+    const PartsList parts = parts_list(read_model_warning_of_clashes(args.positional()[0]));
     if (args.has("--json"))
         std::cout << parts_report_json(parts, owned);
     else if (args.has("--csv"))

@@ -87,6 +87,8 @@ PipelineOptions pipeline_options(const Args &args)
     a.coverage.radius = args.number("--coverage-radius", a.coverage.radius, 0.0, 1e3);
     if (args.has("--operator-weights"))
         a.operator_weights = operator_weights(*args.value("--operator-weights"));
+    a.clearance = !args.has("--no-clearance");
+    a.refuse_new_fold_overs = !args.has("--allow-fold-overs");
     EnergyOptions &e = a.energy;
     if (args.has("--paper-energy"))
         e = paper_energy();
@@ -162,7 +164,7 @@ int cmd_run(const CommandArgs &argv)
                      "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius",
                      "--w-distance", "--w-orientation", "--w-fairing", "--w-complexity", "--w-surface", "--surface-cap",
                      "--surface-spacing", "--surface-zone", "--w-fold"},
-                    {"--initial-only", "--paper-energy"});
+                    {"--initial-only", "--paper-energy", "--no-clearance", "--allow-fold-overs"});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())

@@ -18,5 +18,8 @@ ZomeModel read_model_buffer(std::string_view bytes, const std::string& file_name
 //! The model in the format named by the extension of `file_name`.
 std::string write_model_buffer(const ZomeModel& model, const std::string& file_name);
 void write_model_file(const std::string& path, const ZomeModel& model);
+//! Throws the InvalidInputError write_model_file would for a file name whose format it cannot
+//! write, before any work is done.
+void check_writable_model_name(const std::string& path);
 
 } // namespace zomeify

@@ -40,16 +40,17 @@ ModelTransform scaled_transform()
     return t;
 }
 
+// The paper's energy (its weights, no E_surface): the figures below are worked out by hand.
 EnergyOptions options_with_target(size_t target)
 {
-    EnergyOptions o;
+    EnergyOptions o = paper_energy();
     o.target_nodes = target;
     return o;
 }
 
 TEST(EnergyForbiddenZone, ValuesAtTheBreakpoints)
 {
-    const EnergyOptions o;
+    const EnergyOptions o = paper_energy();
     for (const ForbiddenZone& z : {o.inside, o.outside})
     {
         EXPECT_EQ(forbidden_zone(0.0, z), 0.0);
@@ -73,7 +74,7 @@ TEST(EnergyForbiddenZone, ValuesAtTheBreakpoints)
 
 TEST(EnergyForbiddenZone, DistanceSampleUsesTheZoneOfItsSide)
 {
-    const EnergyOptions o;
+    const EnergyOptions o = paper_energy();
     SurfaceSample s;
     s.distance_squared = 1.0;
     s.inside = true;

@@ -33,9 +33,11 @@ ValidateOptions topology_only()
     return o;
 }
 
+// The local terms (paper §4): E_surface, which needs the faces' handles at commit, is checked with
+// the operators (OperatorEnergy.SurfaceTerm…).
 EnergyOptions options_for(const ZomeModel& model)
 {
-    EnergyOptions o;
+    EnergyOptions o = paper_energy();
     o.target_nodes = model.nodes.size() + 3;
     return o;
 }

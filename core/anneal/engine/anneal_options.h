@@ -52,6 +52,11 @@ struct AnnealOptions
     CoverageOptions coverage;
     //! No commit may create parts that could not be built side by side (clearance_index.h).
     bool clearance = true;
+    //! No commit may add a face turned against the surface (a fold-over); false leaves them to the
+    //! energy's fold-over term.
+    bool refuse_new_fold_overs = true;
+    //! After the schedule, remove the fold-overs left (fold_repair.h); not after a cancel.
+    bool repair_fold_overs = true;
     //! Seconds between calls of the progress callback (and best-model snapshots).
     double progress_interval = 0.25;
 };

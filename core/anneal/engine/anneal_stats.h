@@ -56,6 +56,10 @@ struct AnnealStats
     //! them had no node within the radius at the start and at the end.
     double coverage_radius = 0.0;
     size_t coverage_samples = 0, uncovered_at_start = 0, uncovered_at_end = 0;
+    //! Fold-over faces when the schedule ended and after the repair (fold_repair.h), and the
+    //! repair's proposals and commits.
+    int64_t fold_overs_before_repair = 0, fold_overs_after_repair = 0;
+    uint64_t repair_proposals = 0, repair_commits = 0;
     //! After the run the incremental sums equalled a fresh evaluation, bit for bit.
     bool energy_consistent = false;
 };

@@ -18,51 +18,6 @@ namespace {
 // Counters are flushed to the shared atomics, the clock read and T recomputed once per batch.
 constexpr uint64_t kBatch = 64;
 
-struct Additions
-{
-    size_t nodes = 0, edges = 0, faces = 0;
-};
-
-// What apply_proposal() appends (an upper bound for edges: faces create the struts they miss).
-Additions additions(const LocalChange& c) noexcept
-{
-    Additions a{c.added_nodes().size(), c.added_struts().size(), c.added_faces().size()};
-    for (const NewFace& f : c.added_faces()) a.edges += f.size;
-    return a;
-}
-
-// A new position may have been taken by another thread's commit since propose() looked it up
-// (positions are global, not covered by claims). Checked under the commit lock.
-bool positions_still_free(const ZomeMesh& mesh, const LocalChange& c) noexcept
-{
-    for (const ZVec& p : c.added_nodes())
-    {
-        const Vertex there = mesh.find_vertex(p);
-        if (!there.is_valid())
-            continue;
-        bool leaving = false;
-        for (const Vertex& r : c.removed_nodes()) leaving = leaving || r == there;
-        if (!leaving)
-            return false;
-    }
-    return true;
-}
-
-Rejection rejection_of(ClashKind clash) noexcept
-{
-    switch (clash)
-    {
-    case ClashKind::BallBall:
-        return Rejection::BallsTooClose;
-    case ClashKind::BallStrut:
-        return Rejection::BallOnStrut;
-    case ClashKind::StrutStrut:
-        return Rejection::StrutsTooClose;
-    default:
-        return Rejection::StrutThroughFace;
-    }
-}
-
 class Worker
 {
 public:
@@ -208,7 +163,7 @@ private:
         }
         EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change);
         // No commit may add a face turned against the surface (no model gains a fold-over).
-        if (!delta.ok() || delta.adds_fold_over)
+        if (!delta.ok() || (delta.adds_fold_over && s_.options.refuse_new_fold_overs))
         {
             const Rejection why = delta.ok() ? Rejection::FoldOver : Rejection::Overflow;
             ++totals_.rejections[static_cast<size_t>(why)];
@@ -248,40 +203,14 @@ private:
         }
         if (!metropolis_accept(s_.energy.delta_energy(delta), temperature_, u))
             return false;
-        const Additions add = additions(proposal_.change);
-        if (!s_.mesh.has_capacity_for(add.nodes, add.edges, add.faces) ||
-            s_.mesh.vertices_size() + add.nodes > s_.tags->capacity())
-        {
-            s_.barrier.request();
+        const Rejection why = s_.apply_accepted(proposal_, delta, surface_);
+        if (why == Rejection::None)
+            return true;
+        if (why == Rejection::Busy) // no room yet, or a position taken since propose()
             ++totals_.lost_races;
-            return false;
-        }
-        if (!positions_still_free(s_.mesh, proposal_.change))
-        {
-            ++totals_.lost_races;
-            return false;
-        }
-        if (s_.options.clearance)
-            if (const ClashKind clash = s_.clearance.check(proposal_.change); clash != ClashKind::None)
-            {
-                ++totals_.rejections[static_cast<size_t>(rejection_of(clash))];
-                return false;
-            }
-        // Last, because admitting updates the coverage counts as if the change were applied.
-        if (!s_.coverage.admit(s_.mesh, proposal_.change))
-        {
-            ++totals_.rejections[static_cast<size_t>(Rejection::Uncovered)];
-            return false;
-        }
-        added_faces_.clear();
-        s_.clearance.forget(proposal_.change);
-        apply_proposal(s_.mesh, proposal_, &added_faces_);
-        s_.clearance.learn(s_.mesh, proposal_.change, std::span<const Face>(added_faces_.begin(), added_faces_.size()));
-        s_.energy.commit(delta, std::span<const Face>(added_faces_.begin(), added_faces_.size()), surface_);
-        s_.published_vertices.store(static_cast<uint32_t>(s_.mesh.vertices_size()), std::memory_order_release);
-        if (!s_.has_room_for_any())
-            s_.barrier.request();
-        return true;
+        else
+            ++totals_.rejections[static_cast<size_t>(why)];
+        return false;
     }
 
     void flush()
@@ -305,7 +234,6 @@ private:
     std::optional<Claims> claims_;
     uint64_t tags_generation_ = 0;
     Proposal proposal_;
-    FixedList<Face, LocalChange::kMaxFaces> added_faces_;
     SurfaceChange surface_;
     static constexpr uint64_t kNoEpoch = ~uint64_t{0};
     std::vector<MeshIndex> seeds_; // empty: draw among all nodes

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/anneal/engine/annealer_state.h"
+#include "core/anneal/engine/fold_repair.h"
 #include "core/anneal/proposal.h"
 #include "core/base/errors.h"
 #include "core/mesh/model_convert.h"
@@ -79,7 +80,7 @@ double estimate_t0(AnnealerState& s, int& valid)
         if (propose(kind, s.mesh, seed, rng, claims, proposal))
         {
             EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change);
-            if (delta.ok() && !delta.adds_fold_over) // what the workers would consider
+            if (delta.ok() && (!delta.adds_fold_over || !s.options.refuse_new_fold_overs)) // what the workers would consider
             {
                 s.energy.add_surface_change(s.mesh, proposal.change, delta);
                 spread.add(s.energy.delta_energy(delta));
@@ -146,6 +147,79 @@ void AnnealerState::make_room()
         ++tags_generation;
     }
     published_vertices.store(static_cast<uint32_t>(mesh.vertices_size()), std::memory_order_release);
+}
+
+namespace {
+
+// What apply_proposal() appends (an upper bound for edges: faces create the struts they miss).
+bool has_room(const ZomeMesh& mesh, const NodeTags& tags, const LocalChange& c) noexcept
+{
+    size_t edges = c.added_struts().size();
+    for (const NewFace& f : c.added_faces()) edges += f.size;
+    return mesh.has_capacity_for(c.added_nodes().size(), edges, c.added_faces().size()) &&
+           mesh.vertices_size() + c.added_nodes().size() <= tags.capacity();
+}
+
+// A new position may have been taken by another thread's commit since propose() looked it up
+// (positions are global, not covered by claims).
+bool positions_still_free(const ZomeMesh& mesh, const LocalChange& c) noexcept
+{
+    for (const ZVec& p : c.added_nodes())
+    {
+        const Vertex there = mesh.find_vertex(p);
+        if (!there.is_valid())
+            continue;
+        bool leaving = false;
+        for (const Vertex& r : c.removed_nodes()) leaving = leaving || r == there;
+        if (!leaving)
+            return false;
+    }
+    return true;
+}
+
+Rejection rejection_of(ClashKind clash) noexcept
+{
+    switch (clash)
+    {
+    case ClashKind::BallBall:
+        return Rejection::BallsTooClose;
+    case ClashKind::BallStrut:
+        return Rejection::BallOnStrut;
+    case ClashKind::StrutStrut:
+        return Rejection::StrutsTooClose;
+    default:
+        return Rejection::StrutThroughFace;
+    }
+}
+
+} // namespace
+
+Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDelta& delta, SurfaceChange& surface_change)
+{
+    const LocalChange& change = proposal.change;
+    if (!has_room(mesh, *tags, change))
+    {
+        barrier.request();
+        return Rejection::Busy;
+    }
+    if (!positions_still_free(mesh, change))
+        return Rejection::Busy;
+    if (options.clearance)
+        if (const ClashKind clash = clearance.check(change); clash != ClashKind::None)
+            return rejection_of(clash);
+    // Last, because admitting updates the coverage counts as if the change were applied.
+    if (!coverage.admit(mesh, change))
+        return Rejection::Uncovered;
+    added_faces.clear();
+    clearance.forget(change);
+    apply_proposal(mesh, proposal, &added_faces);
+    const std::span<const Face> added(added_faces.begin(), added_faces.size());
+    clearance.learn(mesh, change, added);
+    energy.commit(delta, added, surface_change);
+    published_vertices.store(static_cast<uint32_t>(mesh.vertices_size()), std::memory_order_release);
+    if (!has_room_for_any())
+        barrier.request();
+    return Rejection::None;
 }
 
 bool AnnealerState::has_room_for_any() const
@@ -286,10 +360,12 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     }
     run_worker(s, 0, totals[0], report);
     for (std::thread& t : threads) t.join();
-    s.finished.store(true);
-
     if (!s.error.empty())
         throw std::runtime_error("annealing failed: " + s.error);
+    FoldRepairStats repair;
+    if (s.options.repair_fold_overs && !s.cancelled.load())
+        repair = repair_fold_overs(s);
+    s.finished.store(true);
 
     AnnealResult result;
     result.start = s.start_terms;
@@ -323,6 +399,10 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     st.coverage_samples = s.coverage.sample_count();
     st.uncovered_at_start = s.uncovered_at_start;
     st.uncovered_at_end = s.coverage.uncovered();
+    st.fold_overs_before_repair = repair.before;
+    st.fold_overs_after_repair = repair.after;
+    st.repair_proposals = repair.proposals;
+    st.repair_commits = repair.commits;
     st.energy_consistent = EnergyState(s.mesh, s.context, s.options.energy).sums() == s.energy.sums();
     if (progress)
     {

@@ -33,6 +33,12 @@ struct AnnealerState
     void make_room();
     //! Whether the mesh can take any one more proposal (worst case of LocalChange's capacity).
     bool has_room_for_any() const;
+    //! Applies a proposal the caller has accepted, with `delta` (its E_surface change simulated
+    //! in `surface` against the current state), unless the mesh has no room for it or a new
+    //! position was taken meanwhile (Busy; with no room, a pause is requested), it would create
+    //! a clash (the clash's rejection) or uncover a part of S (Uncovered). None when applied.
+    //! Caller holds the commit lock exclusively (or runs alone).
+    Rejection apply_accepted(const Proposal& proposal, const EnergyDelta& delta, SurfaceChange& surface);
     //! Stops every worker soon.
     void request_stop() noexcept
     {
@@ -63,6 +69,7 @@ struct AnnealerState
     //! never reads the mesh's array sizes while another thread appends.
     std::atomic<uint32_t> published_vertices{0};
 
+    FixedList<Face, LocalChange::kMaxFaces> added_faces; // apply_accepted's scratch (commit lock)
     PauseBarrier barrier;
     std::atomic<bool> stop{false};
     std::atomic<bool> cancelled{false};
