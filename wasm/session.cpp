@@ -458,10 +458,15 @@ std::string Session::summary() const
             out["by_kind"] = by_kind;
             if (!m.faces.empty())
             {
-                const ValidationReport check = validate(from_model(m));
+                const ZomeMesh mesh = from_model(m);
+                const ValidationReport check = validate(mesh);
                 out["valid"] = check.ok();
                 out["genus"] = check.genus;
                 out["validation"] = check.message();
+                // Any model, a loaded one too: can its parts be built side by side?
+                const ClearanceReport clearance = clearance_report(mesh);
+                out["clashes"] = clearance.total();
+                out["clearance"] = clearance_summary(clearance);
             }
             else
             {

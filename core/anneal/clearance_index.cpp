@@ -36,6 +36,14 @@ bool pierces(const Vec3& a, const Vec3& b, const FaceShape& shape)
     return false;
 }
 
+// Whether two boxes come within `gap` of each other (a cheap test before an exact one; the slack
+// keeps touching pairs in).
+bool boxes_within(const Box3& a, const Box3& b, double gap)
+{
+    const double g = gap + 1e-9;
+    return (a.min.array() <= b.max.array() + g).all() && (b.min.array() <= a.max.array() + g).all();
+}
+
 void mark_all(std::vector<uint32_t>& marks, uint32_t index, uint32_t mark)
 {
     if (index >= marks.size())
@@ -164,8 +172,8 @@ ClashKind ClearanceIndex::check_ball(const Ball& ball) const
         return found;
     // A new ball holds none of the struts that stay (its own are all new).
     struts_.for_each_near(dilated(ball.box, kMinBallStrut), [&](uint32_t i, const Strut& s) {
-        if (found == ClashKind::None && !removed(removed_struts_, i) && !s.holds(ball.at) &&
-            point_segment_distance_squared(ball.p, s.a, s.b) < kBallStrut2)
+        if (found == ClashKind::None && s.box.distance_squared(ball.p) < kBallStrut2 && !removed(removed_struts_, i) &&
+            !s.holds(ball.at) && point_segment_distance_squared(ball.p, s.a, s.b) < kBallStrut2)
             found = ClashKind::BallStrut;
     });
     return found;
@@ -175,7 +183,8 @@ ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
 {
     ClashKind found = ClashKind::None;
     const auto near_ball = [&](const Ball& b) {
-        return !strut.holds(b.at) && point_segment_distance_squared(b.p, strut.a, strut.b) < kBallStrut2;
+        return !strut.holds(b.at) && strut.box.distance_squared(b.p) < kBallStrut2 &&
+               point_segment_distance_squared(b.p, strut.a, strut.b) < kBallStrut2;
     };
     balls_.for_each_near(dilated(strut.box, kMinBallStrut), [&](uint32_t i, const Ball& b) {
         if (found == ClashKind::None && !removed(removed_balls_, i) && near_ball(b))
@@ -188,7 +197,8 @@ ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
         return found;
 
     const auto too_close = [&](const Strut& o) {
-        return !strut.shares_ball(o) && segment_segment_distance_squared(strut.a, strut.b, o.a, o.b) < kStrutStrut2;
+        return !strut.shares_ball(o) && boxes_within(strut.box, o.box, kMinStrutStrut) &&
+               segment_segment_distance_squared(strut.a, strut.b, o.a, o.b) < kStrutStrut2;
     };
     struts_.for_each_near(dilated(strut.box, kMinStrutStrut), [&](uint32_t i, const Strut& o) {
         if (found == ClashKind::None && !removed(removed_struts_, i) && too_close(o))
@@ -201,7 +211,8 @@ ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
         return found;
 
     const auto through = [&](const Panel& p) {
-        return !p.has_corner(strut.from) && !p.has_corner(strut.to) && pierces(strut.a, strut.b, p.shape);
+        return boxes_within(strut.box, p.box, 0.0) && !p.has_corner(strut.from) && !p.has_corner(strut.to) &&
+               pierces(strut.a, strut.b, p.shape);
     };
     panels_.for_each_near(strut.box, [&](uint32_t i, const Panel& p) {
         if (found == ClashKind::None && !removed(removed_panels_, i) && through(p))
@@ -218,8 +229,8 @@ ClashKind ClearanceIndex::check_panel(const Panel& panel) const
     // New struts against new panels were checked with the struts.
     ClashKind found = ClashKind::None;
     struts_.for_each_near(panel.box, [&](uint32_t i, const Strut& s) {
-        if (found == ClashKind::None && !removed(removed_struts_, i) && !panel.has_corner(s.from) &&
-            !panel.has_corner(s.to) && pierces(s.a, s.b, panel.shape))
+        if (found == ClashKind::None && boxes_within(panel.box, s.box, 0.0) && !removed(removed_struts_, i) &&
+            !panel.has_corner(s.from) && !panel.has_corner(s.to) && pierces(s.a, s.b, panel.shape))
             found = ClashKind::StrutFace;
     });
     return found;

@@ -28,7 +28,7 @@ FaceShape face_shape(std::span<const ZVec> corners) noexcept;
 //! Squared distance from p to the face (its nearest triangle).
 double face_distance_squared(const Vec3& p, const FaceShape& face) noexcept;
 
-//! face_distance_squared(p, face) if it is below `bound`, otherwise some value ≥ bound − 1e-9
+//! face_distance_squared(p, face) if it is below `bound`, otherwise a lower bound of it (≥ bound)
 //! (a face is skipped when its box or the planes of its triangles are farther than bound): the
 //! same result wherever it is below the bound, for far less work on the many faces that lose.
 double face_distance_squared_below(const Vec3& p, const FaceShape& face, double bound) noexcept;

@@ -122,7 +122,7 @@ void SurfaceDistance::search_grid(const Vec3& p, Nearest& n, SurfaceChange& c) c
     box.extend(p);
     faces_.for_each_near(dilated(box, std::sqrt(reach) + kSlack), c.visits_, [&](uint32_t face, const FaceShape& shape) {
         if (!removed(c, face))
-            n.offer(face_distance_squared_below(p, shape, n.second), face, false);
+            n.offer(face_distance_squared_below(p, shape, n.best), face, false);
     });
     n.second = std::min(n.second, reach);
 }
@@ -130,7 +130,7 @@ void SurfaceDistance::search_grid(const Vec3& p, Nearest& n, SurfaceChange& c) c
 void SurfaceDistance::search_added(const Vec3& p, Nearest& n, const SurfaceChange& c) noexcept
 {
     for (size_t k = 0; k < c.added_.size(); ++k)
-        n.offer(face_distance_squared_below(p, c.added_[k], n.second), static_cast<uint32_t>(k), true);
+        n.offer(face_distance_squared_below(p, c.added_[k], n.best), static_cast<uint32_t>(k), true);
 }
 
 void SurfaceDistance::reset(const ZomeMesh& mesh)
@@ -240,9 +240,11 @@ void SurfaceDistance::lower_bounds_near_added(const SurfaceChange& c)
         {
             if (c.updated_mark_[i] == c.mark_ || added_box.distance_squared(points[i]) > bound_[i] + kSlack)
                 continue;
+            // A bound only has to stay below the truth: the faces' boxes are enough, and cost
+            // a fraction of the distances (a point whose bound gets too low is searched anew).
             for (size_t k = 0; k < c.added_.size(); ++k)
             {
-                const double d = face_distance_squared_below(points[i], c.added_[k], bound_[i]);
+                const double d = c.added_[k].box.distance_squared(points[i]);
                 if (d < bound_[i])
                 {
                     bound_[i] = d;

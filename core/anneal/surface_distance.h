@@ -106,6 +106,8 @@ private:
         double best, second;
         uint32_t owner;
         bool owner_added;
+        //! Offers a face at distance d, which must be exact when below best; above it, any lower
+        //! bound of the face's distance will do (it only enters `second`, a lower bound too).
         void offer(double d, uint32_t face, bool added) noexcept
         {
             if (d < best)

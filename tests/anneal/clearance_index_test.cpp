@@ -169,3 +169,24 @@ TEST(ClearanceIndex, RandomProposalsAreRefusedExactlyWhenTheyWouldClash)
 
 } // namespace
 } // namespace zomeify
+
+namespace zomeify {
+namespace {
+
+// Z0 is made of B1 cubes: balls at least b1 apart, struts along the grid, faces on cube sides. It
+// must pass the rule the annealer holds every commit to.
+TEST(ClearanceIndex, InitialModelsOfTheSharedMeshesHaveNoClashes)
+{
+    for (const char* name : {"bunny.obj", "fertility.obj", "rockerarm.obj", "elk.obj", "eight.obj", "3holes.obj",
+                             "scorpion.obj", "sphere.obj", "torus.obj", "cube.obj"})
+        for (int resolution : {12, 16})
+        {
+            const test::SharedScene scene = test::shared_scene(name, resolution);
+            const ClearanceReport report = clearance_report(from_model(scene.z0));
+            EXPECT_EQ(report.total(), 0u) << name << " at " << resolution << ": " << clearance_summary(report);
+            EXPECT_GE(report.ball_ball, kMinBallBall) << name;
+        }
+}
+
+} // namespace
+} // namespace zomeify

@@ -6,9 +6,26 @@ import { SAMPLES, DEFAULT_SAMPLE, sampleUrl, fetchBytes } from './samples.js';
 import { pageUrlWith, copyText } from './share_link.js';
 import { modelBaseName, fileNameFromUrl } from './file_names.js';
 
+/**
+ * What a builder wants to know of the model beside its parts: how far it is from the shape (after a
+ * run; the core's own sentence, in mm) and whether its parts fit side by side (any model).
+ */
+export function qualityText(summary) {
+  const lines = [];
+  const fidelity = summary.stats && summary.stats.fidelity;
+  if (fidelity && fidelity.summary) lines.push(fidelity.summary[0].toUpperCase() + fidelity.summary.slice(1) + '.');
+  if (summary.clearance) {
+    const c = summary.clearance;
+    lines.push(summary.clashes > 0 ? `Cannot be built as it is: ${c}.` : `Buildable: ${c}.`);
+  }
+  const folds = summary.stats && summary.stats.fold_overs;
+  if (folds > 0) lines.push(`${folds} ${folds === 1 ? 'face is' : 'faces are'} turned inside out (fold-overs).`);
+  return lines.join(' ');
+}
+
 export class App {
-  constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl }) {
-    Object.assign(this, { bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl });
+  constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl }) {
+    Object.assign(this, { bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl });
     this.running = false;
     this.runCount = 0; // finished runs (scripts and tests wait on it)
     this.currentName = 'model';
@@ -157,9 +174,11 @@ export class App {
       const kinds = Object.entries(s.by_kind).map(([k, n]) => `${k} ${n}`).join(', ');
       const valid = s.valid === null ? '' : s.valid ? ` · valid, genus ${s.genus}` : ' · NOT valid';
       this.summaryEl.textContent = `${s.balls} balls, ${s.struts} struts (${kinds})${valid}`;
+      if (this.qualityEl) this.qualityEl.textContent = qualityText(s);
     } catch (e) {
       this.parts.clear();
       this.summaryEl.textContent = '';
+      if (this.qualityEl) this.qualityEl.textContent = '';
     }
   }
 

@@ -22,7 +22,8 @@ const controls = new Controls(document, { estimate: (r) => bridge.estimate(r) })
 const plot = new RunPlot(document);
 let app = null;
 const parts = new PartsTable(document, { onHover: (kinds) => viewer.highlightKinds(kinds) });
-app = new App({ bridge, viewer, controls, plot, parts, status, summaryEl: $('summary'), surfaceEl: $('surface-info') });
+app = new App({ bridge, viewer, controls, plot, parts, status, summaryEl: $('summary'), surfaceEl: $('surface-info'),
+  qualityEl: $('quality') });
 new Downloads(document, { bridge, status, baseName: () => app.currentName });
 
 let resolveReady, rejectReady;

@@ -3,7 +3,7 @@
 // successes update the name, the summary and the parts.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { App } from '../src/app.js';
+import { App, qualityText } from '../src/app.js';
 import { Event } from '../src/protocol.js';
 import { Status } from '../src/status.js';
 import { FakeElement, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
@@ -51,6 +51,19 @@ test('a model file: its snapshot is framed, later ones are not; name, summary an
   assert.equal(t.statusEl.textContent, 'torus.zome.json: model loaded.');
   assert.equal(t.summaryEl.textContent, '5 balls, 4 struts (B0 2, Y0 1, R0 1) · valid, genus 0');
   assert.equal(t.parts.shown, 1);
+});
+
+test('quality line: the fidelity sentence of a run, and whether the parts fit side by side', () => {
+  assert.equal(qualityText({}), '');
+  assert.equal(qualityText({ clashes: 0, clearance: 'no clashes: the closest parts are two struts 2.3 mm apart' }),
+    'Buildable: no clashes: the closest parts are two struts 2.3 mm apart.');
+  assert.equal(qualityText({ clashes: 4, clearance: '4 clashes: 4 pairs of balls too close' }),
+    'Cannot be built as it is: 4 clashes: 4 pairs of balls too close.');
+  assert.equal(qualityText({ stats: { fidelity: { summary: 'largest gap 24 mm (0.52 b0), where the model misses the surface, at the top' } },
+    clashes: 0, clearance: 'no clashes: x' }),
+  'Largest gap 24 mm (0.52 b0), where the model misses the surface, at the top. Buildable: no clashes: x.');
+  assert.equal(qualityText({ stats: { fold_overs: 2 } }), '2 faces are turned inside out (fold-overs).');
+  assert.equal(qualityText({ stats: { fold_overs: 0 } }), '');
 });
 
 test('a mesh: its surface and diagnosis are shown and the estimate refreshed', async () => {
