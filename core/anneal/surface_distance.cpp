@@ -238,18 +238,13 @@ void SurfaceDistance::lower_bounds_near_added(const SurfaceChange& c)
         bool lowered = false;
         for (uint32_t i = grid_.begin(cell); i < grid_.end(cell); ++i)
         {
-            if (c.updated_mark_[i] == c.mark_ || added_box.distance_squared(points[i]) > bound_[i] + kSlack)
-                continue;
-            // A bound only has to stay below the truth: the faces' boxes are enough, and cost
-            // a fraction of the distances (a point whose bound gets too low is searched anew).
-            for (size_t k = 0; k < c.added_.size(); ++k)
+            // A bound only has to stay below the truth: the added faces' common box is enough, and
+            // costs a fraction of their distances (a point whose bound is too low is searched anew).
+            const double d = added_box.distance_squared(points[i]);
+            if (d < bound_[i] && c.updated_mark_[i] != c.mark_)
             {
-                const double d = c.added_[k].box.distance_squared(points[i]);
-                if (d < bound_[i])
-                {
-                    bound_[i] = d;
-                    lowered = true;
-                }
+                bound_[i] = d;
+                lowered = true;
             }
         }
         if (lowered)
