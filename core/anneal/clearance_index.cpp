@@ -14,9 +14,6 @@ namespace {
 
 // Grid cells (b0): about a strut long.
 constexpr double kCell = 1.0;
-constexpr double kBallBall2 = kMinBallBall * kMinBallBall;
-constexpr double kBallStrut2 = kMinBallStrut * kMinBallStrut;
-constexpr double kStrutStrut2 = kMinStrutStrut * kMinStrutStrut;
 
 Vec3 to_vec3(const ZVec& p)
 {
@@ -24,16 +21,10 @@ Vec3 to_vec3(const ZVec& p)
     return {c[0], c[1], c[2]};
 }
 
-// Whether the segment crosses or touches one of the panel's triangles.
+// The rule of core/geom/clearance.h on a panel's canonical triangles.
 bool pierces(const Vec3& a, const Vec3& b, const FaceShape& shape)
 {
-    for (int i = 0; i < shape.count; ++i)
-    {
-        const auto& t = shape.triangles[i];
-        if (segment_intersects_triangle(a, b, t[0], t[1], t[2]))
-            return true;
-    }
-    return false;
+    return strut_face_clash(a, b, std::span<const std::array<Vec3, 3>>(shape.triangles.data(), shape.count));
 }
 
 // Whether two boxes come within `gap` of each other (a cheap test before an exact one; the slack
@@ -162,18 +153,18 @@ ClashKind ClearanceIndex::check_ball(const Ball& ball) const
 {
     ClashKind found = ClashKind::None;
     balls_.for_each_near(dilated(ball.box, kMinBallBall), [&](uint32_t i, const Ball& other) {
-        if (found == ClashKind::None && !removed(removed_balls_, i) && (other.p - ball.p).squaredNorm() < kBallBall2)
+        if (found == ClashKind::None && !removed(removed_balls_, i) && balls_clash(other.p, ball.p))
             found = ClashKind::BallBall;
     });
     for (const Ball& other : new_balls_)
-        if (&other != &ball && (other.p - ball.p).squaredNorm() < kBallBall2)
+        if (&other != &ball && balls_clash(other.p, ball.p))
             return ClashKind::BallBall;
     if (found != ClashKind::None)
         return found;
     // A new ball holds none of the struts that stay (its own are all new).
     struts_.for_each_near(dilated(ball.box, kMinBallStrut), [&](uint32_t i, const Strut& s) {
-        if (found == ClashKind::None && s.box.distance_squared(ball.p) < kBallStrut2 && !removed(removed_struts_, i) &&
-            !s.holds(ball.at) && point_segment_distance_squared(ball.p, s.a, s.b) < kBallStrut2)
+        if (found == ClashKind::None && s.box.distance_squared(ball.p) < kMinBallStrutSquared &&
+            !removed(removed_struts_, i) && !s.holds(ball.at) && ball_strut_clash(ball.p, s.a, s.b))
             found = ClashKind::BallStrut;
     });
     return found;
@@ -183,8 +174,8 @@ ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
 {
     ClashKind found = ClashKind::None;
     const auto near_ball = [&](const Ball& b) {
-        return !strut.holds(b.at) && strut.box.distance_squared(b.p) < kBallStrut2 &&
-               point_segment_distance_squared(b.p, strut.a, strut.b) < kBallStrut2;
+        return !strut.holds(b.at) && strut.box.distance_squared(b.p) < kMinBallStrutSquared &&
+               ball_strut_clash(b.p, strut.a, strut.b);
     };
     balls_.for_each_near(dilated(strut.box, kMinBallStrut), [&](uint32_t i, const Ball& b) {
         if (found == ClashKind::None && !removed(removed_balls_, i) && near_ball(b))
@@ -198,7 +189,7 @@ ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
 
     const auto too_close = [&](const Strut& o) {
         return !strut.shares_ball(o) && boxes_within(strut.box, o.box, kMinStrutStrut) &&
-               segment_segment_distance_squared(strut.a, strut.b, o.a, o.b) < kStrutStrut2;
+               struts_clash(strut.a, strut.b, o.a, o.b);
     };
     struts_.for_each_near(dilated(strut.box, kMinStrutStrut), [&](uint32_t i, const Strut& o) {
         if (found == ClashKind::None && !removed(removed_struts_, i) && too_close(o))
@@ -289,7 +280,7 @@ ClearanceReport ClearanceIndex::audit() const
                 return;
             const double d = (other.p - ball.p).norm();
             r.ball_ball = std::min(r.ball_ball, d);
-            if (d < kMinBallBall)
+            if (balls_clash(ball.p, other.p))
                 found(ClashKind::BallBall, ball.p, other.p, d);
         });
         struts_.for_each_near(dilated(ball.box, kReach), visits, [&](uint32_t, const Strut& s) {
@@ -297,7 +288,7 @@ ClearanceReport ClearanceIndex::audit() const
                 return;
             const double d = std::sqrt(point_segment_distance_squared(ball.p, s.a, s.b));
             r.ball_strut = std::min(r.ball_strut, d);
-            if (d < kMinBallStrut)
+            if (ball_strut_clash(ball.p, s.a, s.b))
                 found(ClashKind::BallStrut, ball.p, 0.5 * (s.a + s.b), d);
         });
     }
@@ -311,7 +302,7 @@ ClearanceReport ClearanceIndex::audit() const
                 return;
             const double d = std::sqrt(segment_segment_distance_squared(strut.a, strut.b, o.a, o.b));
             r.strut_strut = std::min(r.strut_strut, d);
-            if (d < kMinStrutStrut)
+            if (struts_clash(strut.a, strut.b, o.a, o.b))
                 found(ClashKind::StrutStrut, 0.5 * (strut.a + strut.b), 0.5 * (o.a + o.b), d);
         });
         panels_.for_each_near(strut.box, visits, [&](uint32_t, const Panel& p) {
