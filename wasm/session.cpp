@@ -458,19 +458,21 @@ std::string Session::summary() const
             out["by_kind"] = by_kind;
             if (!m.faces.empty())
             {
-                const ZomeMesh mesh = from_model(m);
-                const ValidationReport check = validate(mesh);
+                const ValidationReport check = validate(from_model(m));
                 out["valid"] = check.ok();
                 out["genus"] = check.genus;
                 out["validation"] = check.message();
-                // Any model, a loaded one too: can its parts be built side by side?
-                const ClearanceReport clearance = clearance_report(mesh);
-                out["clashes"] = clearance.total();
-                out["clearance"] = clearance_summary(clearance);
             }
             else
             {
                 out["valid"] = nullptr;
+            }
+            if (!m.nodes.empty())
+            {
+                // Any model, a loaded one without faces too: can its parts be built side by side?
+                const ClearanceReport clearance = clearance_report(m);
+                out["clashes"] = clearance.total();
+                out["clearance"] = clearance_summary(clearance);
             }
             out["stats"] = nlohmann::json::parse(m.stats_json, nullptr, false);
             if (out["stats"].is_discarded())
