@@ -149,39 +149,39 @@ void ClearanceIndex::reset(const ZomeModel& model)
     }
 }
 
-ClashKind ClearanceIndex::check_ball(const Ball& ball) const
+ClashKind ClearanceIndex::check_ball(const Ball& ball, Scratch& sc) const
 {
     ClashKind found = ClashKind::None;
-    balls_.for_each_near(dilated(ball.box, kMinBallBall), [&](uint32_t i, const Ball& other) {
-        if (found == ClashKind::None && !removed(removed_balls_, i) && balls_clash(other.p, ball.p))
+    balls_.for_each_near(dilated(ball.box, kMinBallBall), sc.visits, [&](uint32_t i, const Ball& other) {
+        if (found == ClashKind::None && !sc.removed(sc.removed_balls, i) && balls_clash(other.p, ball.p))
             found = ClashKind::BallBall;
     });
-    for (const Ball& other : new_balls_)
+    for (const Ball& other : sc.balls)
         if (&other != &ball && balls_clash(other.p, ball.p))
             return ClashKind::BallBall;
     if (found != ClashKind::None)
         return found;
     // A new ball holds none of the struts that stay (its own are all new).
-    struts_.for_each_near(dilated(ball.box, kMinBallStrut), [&](uint32_t i, const Strut& s) {
+    struts_.for_each_near(dilated(ball.box, kMinBallStrut), sc.visits, [&](uint32_t i, const Strut& s) {
         if (found == ClashKind::None && s.box.distance_squared(ball.p) < kMinBallStrutSquared &&
-            !removed(removed_struts_, i) && !s.holds(ball.at) && ball_strut_clash(ball.p, s.a, s.b))
+            !sc.removed(sc.removed_struts, i) && !s.holds(ball.at) && ball_strut_clash(ball.p, s.a, s.b))
             found = ClashKind::BallStrut;
     });
     return found;
 }
 
-ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
+ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index, Scratch& sc) const
 {
     ClashKind found = ClashKind::None;
     const auto near_ball = [&](const Ball& b) {
         return !strut.holds(b.at) && strut.box.distance_squared(b.p) < kMinBallStrutSquared &&
                ball_strut_clash(b.p, strut.a, strut.b);
     };
-    balls_.for_each_near(dilated(strut.box, kMinBallStrut), [&](uint32_t i, const Ball& b) {
-        if (found == ClashKind::None && !removed(removed_balls_, i) && near_ball(b))
+    balls_.for_each_near(dilated(strut.box, kMinBallStrut), sc.visits, [&](uint32_t i, const Ball& b) {
+        if (found == ClashKind::None && !sc.removed(sc.removed_balls, i) && near_ball(b))
             found = ClashKind::BallStrut;
     });
-    for (const Ball& b : new_balls_)
+    for (const Ball& b : sc.balls)
         if (near_ball(b))
             return ClashKind::BallStrut;
     if (found != ClashKind::None)
@@ -191,12 +191,12 @@ ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
         return !strut.shares_ball(o) && boxes_within(strut.box, o.box, kMinStrutStrut) &&
                struts_clash(strut.a, strut.b, o.a, o.b);
     };
-    struts_.for_each_near(dilated(strut.box, kMinStrutStrut), [&](uint32_t i, const Strut& o) {
-        if (found == ClashKind::None && !removed(removed_struts_, i) && too_close(o))
+    struts_.for_each_near(dilated(strut.box, kMinStrutStrut), sc.visits, [&](uint32_t i, const Strut& o) {
+        if (found == ClashKind::None && !sc.removed(sc.removed_struts, i) && too_close(o))
             found = ClashKind::StrutStrut;
     });
-    for (size_t j = index + 1; j < new_struts_.size(); ++j)
-        if (too_close(new_struts_[j]))
+    for (size_t j = index + 1; j < sc.struts.size(); ++j)
+        if (too_close(sc.struts[j]))
             return ClashKind::StrutStrut;
     if (found != ClashKind::None)
         return found;
@@ -205,54 +205,56 @@ ClashKind ClearanceIndex::check_strut(const Strut& strut, size_t index) const
         return boxes_within(strut.box, p.box, 0.0) && !p.has_corner(strut.from) && !p.has_corner(strut.to) &&
                pierces(strut.a, strut.b, p.shape);
     };
-    panels_.for_each_near(strut.box, [&](uint32_t i, const Panel& p) {
-        if (found == ClashKind::None && !removed(removed_panels_, i) && through(p))
+    panels_.for_each_near(strut.box, sc.visits, [&](uint32_t i, const Panel& p) {
+        if (found == ClashKind::None && !sc.removed(sc.removed_panels, i) && through(p))
             found = ClashKind::StrutFace;
     });
-    for (const Panel& p : new_panels_)
+    for (const Panel& p : sc.panels)
         if (through(p))
             return ClashKind::StrutFace;
     return found;
 }
 
-ClashKind ClearanceIndex::check_panel(const Panel& panel) const
+ClashKind ClearanceIndex::check_panel(const Panel& panel, Scratch& sc) const
 {
     // New struts against new panels were checked with the struts.
     ClashKind found = ClashKind::None;
-    struts_.for_each_near(panel.box, [&](uint32_t i, const Strut& s) {
-        if (found == ClashKind::None && boxes_within(panel.box, s.box, 0.0) && !removed(removed_struts_, i) &&
+    struts_.for_each_near(panel.box, sc.visits, [&](uint32_t i, const Strut& s) {
+        if (found == ClashKind::None && boxes_within(panel.box, s.box, 0.0) && !sc.removed(sc.removed_struts, i) &&
             !panel.has_corner(s.from) && !panel.has_corner(s.to) && pierces(s.a, s.b, panel.shape))
             found = ClashKind::StrutFace;
     });
     return found;
 }
 
-ClashKind ClearanceIndex::check(const LocalChange& change) const
-{
-    if (++mark_ == 0) // wrapped: old marks could match again
-    {
-        for (auto* marks : {&removed_balls_, &removed_struts_, &removed_panels_})
-            std::fill(marks->begin(), marks->end(), 0U);
-        mark_ = 1;
-    }
-    for (Vertex v : change.removed_nodes()) mark_all(removed_balls_, v.idx(), mark_);
-    for (Edge e : change.removed_struts()) mark_all(removed_struts_, e.idx(), mark_);
-    for (Face f : change.removed_faces()) mark_all(removed_panels_, f.idx(), mark_);
-    new_balls_.clear();
-    new_struts_.clear();
-    new_panels_.clear();
-    for (const ZVec& p : change.added_nodes()) new_balls_.push_back(make_ball(p));
-    for (const NewStrut& s : change.added_struts()) new_struts_.push_back(make_strut(s.a, s.b));
-    for (const NewFace& f : change.added_faces()) new_panels_.push_back(make_panel(f.view()));
+ClashKind ClearanceIndex::check(const LocalChange& change) const { return check(change, *own_); }
 
-    for (const Ball& b : new_balls_)
-        if (const ClashKind k = check_ball(b); k != ClashKind::None)
+ClashKind ClearanceIndex::check(const LocalChange& change, Scratch& sc) const
+{
+    if (++sc.mark == 0) // wrapped: old marks could match again
+    {
+        for (auto* marks : {&sc.removed_balls, &sc.removed_struts, &sc.removed_panels})
+            std::fill(marks->begin(), marks->end(), 0U);
+        sc.mark = 1;
+    }
+    for (Vertex v : change.removed_nodes()) mark_all(sc.removed_balls, v.idx(), sc.mark);
+    for (Edge e : change.removed_struts()) mark_all(sc.removed_struts, e.idx(), sc.mark);
+    for (Face f : change.removed_faces()) mark_all(sc.removed_panels, f.idx(), sc.mark);
+    sc.balls.clear();
+    sc.struts.clear();
+    sc.panels.clear();
+    for (const ZVec& p : change.added_nodes()) sc.balls.push_back(make_ball(p));
+    for (const NewStrut& st : change.added_struts()) sc.struts.push_back(make_strut(st.a, st.b));
+    for (const NewFace& f : change.added_faces()) sc.panels.push_back(make_panel(f.view()));
+
+    for (const Ball& b : sc.balls)
+        if (const ClashKind k = check_ball(b, sc); k != ClashKind::None)
             return k;
-    for (size_t i = 0; i < new_struts_.size(); ++i)
-        if (const ClashKind k = check_strut(new_struts_[i], i); k != ClashKind::None)
+    for (size_t i = 0; i < sc.struts.size(); ++i)
+        if (const ClashKind k = check_strut(sc.struts[i], i, sc); k != ClashKind::None)
             return k;
-    for (const Panel& p : new_panels_)
-        if (const ClashKind k = check_panel(p); k != ClashKind::None)
+    for (const Panel& p : sc.panels)
+        if (const ClashKind k = check_panel(p, sc); k != ClashKind::None)
             return k;
     return ClashKind::None;
 }

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -71,7 +72,12 @@ public:
     void reset(const ZomeMesh& mesh);
     //! Indexes a model as it is (balls, struts, and faces if it has them), valid or not.
     void reset(const ZomeModel& model);
-    //! The first clash that applying `change` would create, or None.
+    //! One thread's scratch for check() (the change's new elements, marks of its removed ones).
+    struct Scratch;
+    //! The first clash that applying `change` would create, or None. Only reads the grids, so any
+    //! number of threads may check at once, each with its own scratch, while none forgets or learns.
+    ClashKind check(const LocalChange& change, Scratch& scratch) const;
+    //! The same with the index's own scratch (one thread).
     ClashKind check(const LocalChange& change) const;
     //! Keeps the grids in step with an applied change: call forget() with the mesh before
     //! apply_proposal, and learn() after it with the new faces' handles (change.added_faces() order).
@@ -81,7 +87,6 @@ public:
     //! Every clash among the indexed elements (each pair once), and the smallest clearances.
     ClearanceReport audit() const;
 
-private:
     struct Ball
     {
         Vec3 p;
@@ -104,27 +109,33 @@ private:
         Box3 box;
         bool has_corner(const ZVec& p) const noexcept;
     };
+    struct Scratch
+    {
+        FixedList<Ball, LocalChange::kMaxNodes> balls;
+        FixedList<Strut, LocalChange::kMaxStruts> struts;
+        FixedList<Panel, LocalChange::kMaxFaces> panels;
+        std::vector<uint32_t> removed_balls, removed_struts, removed_panels;
+        uint32_t mark = 0;
+        GridVisits visits;
+        bool removed(const std::vector<uint32_t>& marks, uint32_t index) const noexcept
+        {
+            return index < marks.size() && marks[index] == mark;
+        }
+    };
+
+private:
     static Ball make_ball(const ZVec& p);
     static Strut make_strut(const ZVec& a, const ZVec& b);
     static Panel make_panel(std::span<const ZVec> corners);
 
-    ClashKind check_ball(const Ball& ball) const;
-    ClashKind check_strut(const Strut& strut, size_t index) const;
-    ClashKind check_panel(const Panel& panel) const;
-    bool removed(const std::vector<uint32_t>& marks, uint32_t index) const noexcept
-    {
-        return index < marks.size() && marks[index] == mark_;
-    }
+    ClashKind check_ball(const Ball& ball, Scratch& s) const;
+    ClashKind check_strut(const Strut& strut, size_t index, Scratch& s) const;
+    ClashKind check_panel(const Panel& panel, Scratch& s) const;
 
     ElementGrid<Ball> balls_;
     ElementGrid<Strut> struts_;
     ElementGrid<Panel> panels_;
-    // The change under check: its new elements and the marks of its removed ones.
-    mutable FixedList<Ball, LocalChange::kMaxNodes> new_balls_;
-    mutable FixedList<Strut, LocalChange::kMaxStruts> new_struts_;
-    mutable FixedList<Panel, LocalChange::kMaxFaces> new_panels_;
-    mutable std::vector<uint32_t> removed_balls_, removed_struts_, removed_panels_;
-    mutable uint32_t mark_ = 0;
+    mutable std::unique_ptr<Scratch> own_ = std::make_unique<Scratch>();
 };
 
 //! The clearance report of a whole model (a model without faces is checked for ball and strut

@@ -70,7 +70,7 @@ nlohmann::json anneal_json(const AnnealResult& a)
             {"rejections", rejections},
             {"busy_seeds", s.busy_seeds},
             {"dead_seeds", s.dead_seeds},
-            {"lost_races", s.lost_races}, {"surface_resimulations", s.surface_resimulations},
+            {"lost_races", s.lost_races}, {"redecisions", s.redecisions},
             {"fold_over_repair", {{"before", s.fold_overs_before_repair}, {"after", s.fold_overs_after_repair},
                                   {"proposals", s.repair_proposals}, {"commits", s.repair_commits}}},
             {"garbage_collections", s.garbage_collections},

@@ -49,8 +49,9 @@ struct AnnealStats
     uint64_t busy_seeds = 0;          //!< seed draws that found the node claimed by another thread
     uint64_t dead_seeds = 0;          //!< seed draws that hit a deleted node slot
     uint64_t lost_races = 0;          //!< accepted proposals dropped at commit (position taken meanwhile)
-    //! E_surface simulated again at commit because another thread committed in between.
-    uint64_t surface_resimulations = 0;
+    //! Accepted proposals decided again at commit (E_surface, Metropolis, clearance) because
+    //! another thread committed in between.
+    uint64_t redecisions = 0;
     uint64_t garbage_collections = 0; //!< synchronized pauses to compact and grow the mesh
     //! The coverage guard (coverage_guard.h): its radius (0: off), samples on S, and how many of
     //! them had no node within the radius at the start and at the end.

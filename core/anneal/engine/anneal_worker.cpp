@@ -172,19 +172,9 @@ private:
         }
         ++counts.valid;
         ++unflushed_valid_;
-        // E_surface reads the faces near the change, which claims do not cover: under the commit
-        // lock held shared, so both threads can simulate while no commit runs.
-        if (s_.energy.surface_enabled())
-        {
-            std::shared_lock lock(s_.commit_lock, std::defer_lock);
-            if (shared_)
-                lock.lock();
-            s_.energy.add_surface_change(s_.mesh, proposal_.change, delta, surface_);
-        }
-        // Drawn outside the lock and for every valid proposal, so the random stream does not
-        // depend on the outcome.
+        // Drawn for every valid proposal, so the random stream does not depend on the outcome.
         const double u = rng_.uniform01();
-        if (commit(delta, u))
+        if (decide(delta, u) && commit(delta, u))
         {
             ++counts.accepted;
             ++unflushed_commits_;
@@ -192,18 +182,44 @@ private:
         claims_->release_all();
     }
 
+    // E_surface's change, Metropolis and, for an accepted proposal, the clearance rule: they read
+    // the sums and the model near the change, which claims do not cover, so under the commit lock
+    // held shared: the threads decide at once while no commit runs. True when the proposal is
+    // accepted and creates no clash (commit() checks whether a commit came in between).
+    bool decide(EnergyDelta& delta, double u)
+    {
+        std::shared_lock lock(s_.commit_lock, std::defer_lock);
+        if (shared_)
+            lock.lock();
+        decided_at_ = s_.commits_applied;
+        return accepted_without_clash(delta, u);
+    }
+
+    bool accepted_without_clash(EnergyDelta& delta, double u)
+    {
+        s_.energy.add_surface_change(s_.mesh, proposal_.change, delta, surface_);
+        if (!metropolis_accept(s_.energy.delta_energy(delta), temperature_, u))
+            return false;
+        if (s_.options.clearance)
+            if (const ClashKind clash = s_.clearance.check(proposal_.change, clearance_); clash != ClashKind::None)
+            {
+                ++totals_.rejections[static_cast<size_t>(clash_rejection(clash))];
+                return false;
+            }
+        return true;
+    }
+
     bool commit(EnergyDelta delta, double u)
     {
         std::lock_guard lock(s_.commit_lock);
-        // Another thread committed since this one simulated E_surface: again, against the state now.
-        if (!s_.energy.surface_current(surface_))
+        // Another thread committed since this one decided: decide again, against the model now.
+        if (s_.commits_applied != decided_at_)
         {
-            ++totals_.surface_resimulations;
-            s_.energy.add_surface_change(s_.mesh, proposal_.change, delta, surface_);
+            ++totals_.redecisions;
+            if (!accepted_without_clash(delta, u))
+                return false;
         }
-        if (!metropolis_accept(s_.energy.delta_energy(delta), temperature_, u))
-            return false;
-        const Rejection why = s_.apply_accepted(proposal_, delta, surface_);
+        const Rejection why = s_.apply_accepted(proposal_, delta, surface_, false);
         if (why == Rejection::None)
             return true;
         if (why == Rejection::Busy) // no room yet, or a position taken since propose()
@@ -235,6 +251,8 @@ private:
     uint64_t tags_generation_ = 0;
     Proposal proposal_;
     SurfaceChange surface_;
+    ClearanceIndex::Scratch clearance_;
+    uint64_t decided_at_ = 0; // commits_applied when this thread last decided
     static constexpr uint64_t kNoEpoch = ~uint64_t{0};
     std::vector<MeshIndex> seeds_; // empty: draw among all nodes
     uint64_t slab_epoch_ = kNoEpoch;

@@ -114,7 +114,7 @@ void add_counts(AnnealStats& into, const AnnealStats& from)
     into.busy_seeds += from.busy_seeds;
     into.dead_seeds += from.dead_seeds;
     into.lost_races += from.lost_races;
-    into.surface_resimulations += from.surface_resimulations;
+    into.redecisions += from.redecisions;
 }
 
 } // namespace
@@ -177,7 +177,9 @@ bool positions_still_free(const ZomeMesh& mesh, const LocalChange& c) noexcept
     return true;
 }
 
-Rejection rejection_of(ClashKind clash) noexcept
+} // namespace
+
+Rejection clash_rejection(ClashKind clash) noexcept
 {
     switch (clash)
     {
@@ -192,9 +194,8 @@ Rejection rejection_of(ClashKind clash) noexcept
     }
 }
 
-} // namespace
-
-Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDelta& delta, SurfaceChange& surface_change)
+Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDelta& delta, SurfaceChange& surface_change,
+                                        bool check_clearance)
 {
     const LocalChange& change = proposal.change;
     if (!has_room(mesh, *tags, change))
@@ -204,9 +205,9 @@ Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDe
     }
     if (!positions_still_free(mesh, change))
         return Rejection::Busy;
-    if (options.clearance)
+    if (options.clearance && check_clearance)
         if (const ClashKind clash = clearance.check(change); clash != ClashKind::None)
-            return rejection_of(clash);
+            return clash_rejection(clash);
     // Last, because admitting updates the coverage counts as if the change were applied.
     if (!coverage.admit(mesh, change))
         return Rejection::Uncovered;
@@ -216,6 +217,7 @@ Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDe
     const std::span<const Face> added(added_faces.begin(), added_faces.size());
     clearance.learn(mesh, change, added);
     energy.commit(delta, added, surface_change);
+    ++commits_applied;
     published_vertices.store(static_cast<uint32_t>(mesh.vertices_size()), std::memory_order_release);
     if (!has_room_for_any())
         barrier.request();

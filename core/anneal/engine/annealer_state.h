@@ -38,7 +38,9 @@ struct AnnealerState
     //! position was taken meanwhile (Busy; with no room, a pause is requested), it would create
     //! a clash (the clash's rejection) or uncover a part of S (Uncovered). None when applied.
     //! Caller holds the commit lock exclusively (or runs alone).
-    Rejection apply_accepted(const Proposal& proposal, const EnergyDelta& delta, SurfaceChange& surface);
+    //! `check_clearance` false: the caller checked the clearance rule against this very state.
+    Rejection apply_accepted(const Proposal& proposal, const EnergyDelta& delta, SurfaceChange& surface,
+                             bool check_clearance = true);
     //! Stops every worker soon.
     void request_stop() noexcept
     {
@@ -70,6 +72,9 @@ struct AnnealerState
     std::atomic<uint32_t> published_vertices{0};
 
     FixedList<Face, LocalChange::kMaxFaces> added_faces; // apply_accepted's scratch (commit lock)
+    //! Commits applied so far (written under the commit lock held exclusively, read under it held
+    //! shared): a decision taken at one count is stale at another.
+    uint64_t commits_applied = 0;
     PauseBarrier barrier;
     std::atomic<bool> stop{false};
     std::atomic<bool> cancelled{false};
@@ -93,5 +98,8 @@ struct WorkerTotals
 };
 void run_worker(AnnealerState& state, int index, WorkerTotals& totals,
                 const std::function<void()>& report_progress);
+
+//! The rejection reason of a clash.
+Rejection clash_rejection(ClashKind clash) noexcept;
 
 } // namespace zomeify
