@@ -20,7 +20,9 @@ int cmd_link(const CommandArgs& argv)
         const auto outputs = args.values("-o");
         if (outputs.empty())
             throw InvalidInputError("missing -o OUT");
+        for (const std::string& out : outputs) check_writable_model_name(out);
         const ZomeModel model = decode_share_link(*fragment);
+        warn_of_clashes(model, "the link");
         for (const std::string& out : outputs)
         {
             write_model_file(out, model);

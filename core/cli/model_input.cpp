@@ -7,13 +7,18 @@
 
 namespace zomeify::cli {
 
+void warn_of_clashes(const ZomeModel& model, const std::string& source)
+{
+    const ClearanceReport clearance = clearance_report(model);
+    if (clearance.total() > 0)
+        std::cerr << "warning: " << source << ": " << clearance_summary(clearance)
+                  << " (parts closer than real Zometool allows)\n";
+}
+
 ZomeModel read_model_warning_of_clashes(const std::string& path)
 {
     ZomeModel model = read_model_file(path);
-    const ClearanceReport clearance = clearance_report(model);
-    if (clearance.total() > 0)
-        std::cerr << "warning: " << path << ": " << clearance_summary(clearance)
-                  << " (parts closer than real Zometool allows)\n";
+    warn_of_clashes(model, path);
     return model;
 }
 

@@ -12,4 +12,7 @@ namespace zomeify::cli {
 //! read_model_file(path), then "warning: PATH: N clashes: …" on stderr if it has clashes.
 ZomeModel read_model_warning_of_clashes(const std::string& path);
 
+//! The same warning for a model from elsewhere (a share link), named `source`.
+void warn_of_clashes(const ZomeModel& model, const std::string& source);
+
 } // namespace zomeify::cli

@@ -122,6 +122,9 @@ expect_error "bad out format" 'unknown model format'   convert "$bunny" -o "$tmp
 warning=$("${cli[@]}" parts "$bunny" 2>&1 >/dev/null); rc=$?
 if [ $rc -eq 0 ] && grep -q "warning: .*4 clashes: 4 pairs of balls too close" <<<"$warning"; then ok
 else bad "clash warning: exit $rc, stderr: $warning"; fi
+warning=$("${cli[@]}" link --decode "#$link" -o "$tmp/linked2.vef" 2>&1 >/dev/null); rc=$?
+if [ $rc -eq 0 ] && grep -q "warning: the link: 4 clashes" <<<"$warning"; then ok
+else bad "link clash warning: exit $rc, stderr: $warning"; fi
 
 echo "cli: $pass passed, $fail failed"
 [ $fail -eq 0 ]
