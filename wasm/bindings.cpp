@@ -36,6 +36,7 @@ public:
     std::string load_model(const std::string &bytes, const std::string &name) { return s_.load_model(bytes, name); }
     std::string open_link(const std::string &link) { return s_.open_link(link); }
     std::string estimate(int resolution) { return s_.estimate(resolution); }
+    std::string auto_resolution() { return s_.auto_resolution(); }
     std::string start(const std::string &options) { return s_.start(options); }
     std::string run_blocking(const std::string &options, val callback, double interval)
     {
@@ -158,6 +159,7 @@ EMSCRIPTEN_BINDINGS(zomeify_web)
         .function("loadModel", &WebSession::load_model)
         .function("openLink", &WebSession::open_link)
         .function("estimate", &WebSession::estimate)
+        .function("autoResolution", &WebSession::auto_resolution)
         .function("start", &WebSession::start)
         .function("runBlocking", &WebSession::run_blocking)
         .function("cancel", &WebSession::cancel)
@@ -170,7 +172,7 @@ EMSCRIPTEN_BINDINGS(zomeify_web)
         .function("link", &WebSession::link)
         .function("summary", &WebSession::summary);
     emscripten::function("maxThreads", &max_threads);
-    emscripten::function("defaultRunOptions", &default_run_options_json);
+    emscripten::function("runSettingsSchema", &run_settings_schema_json);
     emscripten::function("threadedBuild", &threaded_build);
 }
 

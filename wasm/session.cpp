@@ -12,12 +12,15 @@
 #include "core/io/share_link.h"
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
+#include "core/parts/kits.h"
 #include "core/parts/parts_list.h"
 #include "core/parts/parts_report.h"
 #include "core/pipeline/pipeline.h"
 #include "core/surface/read_mesh.h"
 #include "core/surface/report_text.h"
 #include "core/voxel/advisor.h"
+#include "core/voxel/auto_resolution.h"
+#include "core/zome/real_sizes.h"
 #include "core/voxel/initial_model.h"
 #include "core/zome/slots.h"
 
@@ -86,16 +89,21 @@ InitialModelOptions z0_options(int resolution, long long genus)
     return o;
 }
 
-std::string advice_for(const LoadedSurface &s, int resolution, long long genus)
+// A rough bill for a model of `balls` balls across `cells` B1 cells: its size at real scale and
+// how many of the largest standard kit it takes by balls (the struts of a finished model come to
+// 2.2-2.9 per ball, which such a kit also covers).
+nlohmann::json size_estimate(const InitialModel &z0, size_t balls)
 {
-    if (genus == s.report.genus)
-        return "";
-    AdvisorOptions advisor;
-    advisor.seconds = 3.0;
-    advisor.min_resolution = resolution + 1;
-    advisor.max_resolution = std::max(48, 2 * resolution);
-    AdvisorResult found = advise_resolution(s.mesh, s.report.genus, s.is_inside(), advisor);
-    return advice_message(resolution, genus, found);
+    const auto &dims = z0.report.grid.dims;
+    const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
+    const Kit *largest = &standard_kits().front();
+    for (const Kit &k : standard_kits())
+        if (k.balls > largest->balls)
+            largest = &k;
+    const size_t kits = (balls + largest->balls - 1) / largest->balls;
+    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0},
+            {"kits", kits},
+            {"kit_name", std::string(largest->name)}};
 }
 
 } // namespace
@@ -184,8 +192,9 @@ std::string Session::estimate(int resolution)
                 throw InvalidInputError("no mesh loaded");
             if (busy())
                 throw InvalidInputError("a run is in progress");
-            if (resolution < 2 || resolution > 256)
-                throw InvalidInputError("resolution must be between 2 and 256 cells");
+            if (resolution < kMinResolution || resolution > kMaxResolution)
+                throw InvalidInputError("resolution must be between " + std::to_string(kMinResolution) + " and " +
+                                        std::to_string(kMaxResolution) + " cells");
             const InitialModel z0 = build_initial_model(surface_->mesh, surface_->is_inside(),
                                                         z0_options(resolution, surface_->report.genus));
             nlohmann::json out;
@@ -197,8 +206,46 @@ std::string Session::estimate(int resolution)
             out["genus"] = z0.report.topology.genus;
             out["surface_genus"] = surface_->report.genus;
             out["kept"] = z0.report.valid && z0.report.topology.genus == surface_->report.genus;
-            out["advice"] = z0.report.valid ? advice_for(*surface_, resolution, z0.report.topology.genus) : "";
+            const GenusAdvice advice =
+                z0.report.valid ? genus_advice(surface_->mesh, surface_->report.genus, surface_->is_inside(), resolution,
+                                               z0.report.topology.genus, 3.0)
+                                : GenusAdvice{};
+            out["advice"] = advice.message;
+            out["advice_resolution"] = advice.resolution;
             out["seconds"] = z0.report.seconds;
+            out.update(size_estimate(z0, z0.model.nodes.size()));
+            return out.dump();
+        });
+}
+
+std::string Session::auto_resolution()
+{
+    return guarded(
+        [&]
+        {
+            if (!surface_)
+                throw InvalidInputError("no mesh loaded");
+            if (busy())
+                throw InvalidInputError("a run is in progress");
+            AutoResolutionOptions options;
+            options.seconds = 3.0;
+            const AutoResolution a =
+                choose_resolution(surface_->mesh, surface_->report.genus, surface_->is_inside(), options);
+            const InitialModel z0 = build_initial_model(surface_->mesh, surface_->is_inside(),
+                                                        z0_options(a.resolution, surface_->report.genus));
+            nlohmann::json out;
+            out["ok"] = true;
+            out["resolution"] = a.resolution;
+            out["nodes"] = z0.model.nodes.size();
+            out["struts"] = z0.model.struts.size();
+            out["valid"] = z0.report.valid;
+            out["genus"] = z0.report.topology.genus;
+            out["surface_genus"] = surface_->report.genus;
+            out["kept"] = a.genus_kept;
+            out["searched_to"] = a.searched_to;
+            out["message"] = a.message;
+            out["seconds"] = a.seconds;
+            out.update(size_estimate(z0, z0.model.nodes.size()));
             return out.dump();
         });
 }
@@ -228,17 +275,11 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
     try
     {
         const LoadedSurface &s = *surface_;
-        PipelineOptions po;
-        po.resolution = options.resolution;
-        po.initial_only = options.initial_only;
+        PipelineOptions po = pipeline_options(options);
         po.advisor_seconds = 3.0;
         AnnealOptions &a = po.anneal;
-        a.seconds = options.seconds;
-        a.max_proposals = options.proposals;
-        a.threads = std::clamp(options.threads, 1, max_run_threads());
-        a.seed = options.seed;
-        a.target_nodes = static_cast<size_t>(options.target_nodes);
-        a.energy = options.energy;
+        // 0 = automatic: every thread this build can start.
+        a.threads = options.threads == 0 ? max_run_threads() : std::clamp(options.threads, 1, max_run_threads());
         a.progress_interval = 0.1;
         control.update(
             [&](RunProgress &p)
@@ -314,6 +355,8 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
                 p.genus = result.model_genus;
                 p.surface_genus = result.surface_genus;
                 p.note = result.advice;
+                if (result.automatic && !result.automatic->genus_kept)
+                    p.note = result.automatic->message;
                 if (!result.model_valid)
                     p.note += (p.note.empty() ? "" : " ") + std::string("Model check: ") + result.validation;
                 p.state = control.cancel_requested() ? RunState::Cancelled : RunState::Done;

@@ -40,8 +40,11 @@ public:
     std::string open_link(const std::string &link);
 
     //! Z0 at `resolution` cells without keeping it: {nodes, struts, genus, surface_genus, kept,
-    //! advice}. Used by the page's live estimate.
+    //! advice, size_mm, kits}. Used by the page's live estimate.
     std::string estimate(int resolution);
+    //! The resolution a run takes when the user chose none (core/voxel/auto_resolution.h):
+    //! {resolution, genus_kept, searched_to, message} plus estimate()'s fields for it.
+    std::string auto_resolution();
 
     //! Starts a run (Z0, then annealing) on its own thread and returns at once; poll() reports.
     //! In the single-threaded build use run_blocking().

@@ -16,6 +16,7 @@
 #include "core/cli/commands.h"
 #include "core/io/model_io.h"
 #include "core/pipeline/pipeline.h"
+#include "core/pipeline/run_settings.h"
 #include "core/surface/prepare.h"
 #include "core/surface/read_mesh.h"
 
@@ -24,9 +25,6 @@ namespace zomeify::cli
 
 namespace
 {
-
-constexpr int kDefaultResolution = 16;
-constexpr double kDefaultSeconds = 60.0;
 
 std::string file_name(const std::string &path)
 {
@@ -60,22 +58,46 @@ std::array<uint32_t, 7> operator_weights(const std::string &text)
     return w;
 }
 
+// An option of run_settings.h from its flag, within the core's bounds (the page reads the same ones).
+double setting(const Args &args, const char *key, double fallback)
+{
+    const OptionBounds &b = option_bounds(key);
+    return b.integer ? static_cast<double>(args.integer(b.flag, static_cast<long long>(fallback),
+                                                        static_cast<long long>(b.min), static_cast<long long>(b.max)))
+                     : args.number(b.flag, fallback, b.min, b.max);
+}
+
+// The options every front end shares (run_settings.h); "--resolution auto" is the default.
+RunSettings run_settings(const Args &args)
+{
+    RunSettings s;
+    if (args.has("--paper-energy"))
+        s.energy = paper_energy();
+    if (args.value("--resolution") != std::optional<std::string>("auto"))
+        s.resolution = static_cast<int>(setting(args, "resolution", s.resolution));
+    s.seconds = setting(args, "seconds", s.seconds);
+    s.proposals = static_cast<uint64_t>(setting(args, "proposals", static_cast<double>(s.proposals)));
+    s.target_nodes = static_cast<long long>(setting(args, "target_nodes", static_cast<double>(s.target_nodes)));
+    s.threads = static_cast<int>(setting(args, "threads", s.threads));
+    s.seed = static_cast<uint64_t>(setting(args, "seed", static_cast<double>(s.seed)));
+    s.initial_only = args.has("--initial-only");
+    s.energy.w_distance = setting(args, "weights.dist", s.energy.w_distance);
+    s.energy.w_orientation = setting(args, "weights.orient", s.energy.w_orientation);
+    s.energy.w_fairing = setting(args, "weights.fair", s.energy.w_fairing);
+    s.energy.w_complexity = setting(args, "weights.complex", s.energy.w_complexity);
+    s.energy.w_surface = setting(args, "weights.surface", s.energy.w_surface);
+    s.energy.w_fold = setting(args, "weights.fold", s.energy.w_fold);
+    s.check();
+    return s;
+}
+
 PipelineOptions pipeline_options(const Args &args)
 {
-    PipelineOptions o;
-    o.initial_only = args.has("--initial-only");
-    o.resolution = static_cast<int>(args.integer("--resolution", kDefaultResolution, 1, 1024));
+    PipelineOptions o = zomeify::pipeline_options(run_settings(args));
     o.b1 = args.number("--b1", 0.0, 0.0, 1e300);
     if (args.has("--b1") && !(o.b1 > 0.0))
         throw InvalidInputError("--b1 must be a positive length in mesh units");
     AnnealOptions &a = o.anneal;
-    a.seconds = args.number("--seconds", kDefaultSeconds, 0.0, 1e7);
-    if (!(a.seconds > 0.0))
-        throw InvalidInputError("--seconds must be a positive number");
-    a.max_proposals = static_cast<uint64_t>(args.integer("--proposals", 0, 1, 1LL << 50));
-    a.threads = static_cast<int>(args.integer("--threads", 0, 0, 64));
-    a.seed = static_cast<uint64_t>(args.integer("--seed", 1, 0, (1LL << 53)));
-    a.target_nodes = static_cast<size_t>(args.integer("--target-nodes", 0, 4, 10000000));
     a.initial_temperature = args.number("--t0", 0.0, 0.0, 1e6);
     if (args.has("--t-min") && args.has("--t-min-ratio"))
         throw InvalidInputError("give either --t-min or --t-min-ratio, not both");
@@ -90,17 +112,9 @@ PipelineOptions pipeline_options(const Args &args)
     a.clearance = !args.has("--no-clearance");
     a.refuse_new_fold_overs = !args.has("--allow-fold-overs");
     EnergyOptions &e = a.energy;
-    if (args.has("--paper-energy"))
-        e = paper_energy();
-    e.w_distance = args.number("--w-distance", e.w_distance, 0.0, 1e6);
-    e.w_orientation = args.number("--w-orientation", e.w_orientation, 0.0, 1e6);
-    e.w_fairing = args.number("--w-fairing", e.w_fairing, 0.0, 1e6);
-    e.w_complexity = args.number("--w-complexity", e.w_complexity, 0.0, 1e6);
-    e.w_surface = args.number("--w-surface", e.w_surface, 0.0, 1e6);
     e.surface_cap = args.number("--surface-cap", e.surface_cap, 0.05, 100.0);
     e.surface_spacing = args.number("--surface-spacing", e.surface_spacing, 0.05, 100.0);
     e.surface_zone.f_max = args.number("--surface-zone", e.surface_zone.f_max, 0.0, 1e6);
-    e.w_fold = args.number("--w-fold", e.w_fold, 0.0, 1e6);
     return o;
 }
 
@@ -136,6 +150,8 @@ std::string summary(const std::string &path, const PipelineResult &r, const std:
     if (z0.attempts > 1)
         s << "; " << z0.attempts << " grids tried";
     s << std::setprecision(3) << "; " << r.initial_seconds << " s.";
+    if (r.automatic)
+        s << " Resolution chosen automatically: " << r.automatic->message << ".";
     if (r.anneal)
     {
         const AnnealStats &st = r.anneal->stats;

@@ -17,27 +17,6 @@ namespace zomeify {
 
 namespace {
 
-std::string genus_advice(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
-                         int resolution, long long genus, double seconds)
-{
-    // The user wants about this much detail, so look first for the nearest finer grid that keeps
-    // the genus (the smallest one overall may be a useless blob), and only then below their choice.
-    AdvisorOptions advisor;
-    advisor.seconds = seconds;
-    advisor.min_resolution = resolution + 1;
-    advisor.max_resolution = std::max(64, 2 * resolution);
-    AdvisorResult found = advise_resolution(surface, surface_genus, inside, advisor);
-    if (!found.found && resolution > 4)
-    {
-        advisor.min_resolution = 4;
-        advisor.max_resolution = resolution - 1;
-        const AdvisorResult below = advise_resolution(surface, surface_genus, inside, advisor);
-        if (below.found)
-            found = below;
-    }
-    return advice_message(resolution, genus, found);
-}
-
 // Closedness, Zome rules, genus, fold-overs and energy of the model to be written.
 void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyOptions& energy, size_t target_nodes,
                  int fidelity_samples)
@@ -67,8 +46,10 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
 {
     if (options.b1 < 0.0 || !std::isfinite(options.b1))
         throw InvalidInputError("b1 must be a positive length in mesh units");
-    if (options.b1 == 0.0 && (options.resolution < 1 || options.resolution > 1024))
-        throw InvalidInputError("the resolution must be between 1 and 1024 cells");
+    if (options.b1 == 0.0 && options.resolution != kAutoResolution &&
+        (options.resolution < kMinResolution || options.resolution > kMaxResolution))
+        throw InvalidInputError("the resolution must be between " + std::to_string(kMinResolution) + " and " +
+                                std::to_string(kMaxResolution) + " cells, or automatic");
 
     Stopwatch clock;
     PipelineResult r;
@@ -83,6 +64,13 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
     const SurfaceProjector projector(surface);
     const InsideTest inside(projector);
     const InsidePredicate is_inside = [&](const Vec3& p) { return inside.is_inside(p); };
+    if (options.b1 == 0.0 && options.resolution == kAutoResolution)
+    {
+        AutoResolutionOptions automatic;
+        automatic.seconds = options.advisor_seconds;
+        r.automatic = choose_resolution(surface, surface_genus, is_inside, automatic);
+        z0_options.resolution = r.automatic->resolution;
+    }
     r.initial = build_initial_model(surface, is_inside, z0_options);
     r.initial_seconds = r.initial.report.seconds;
     const InitialModelReport& z0 = r.initial.report;
@@ -98,10 +86,12 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
 
     const auto [lo, hi] = bounding_box(surface);
     r.resolution = options.b1 > 0.0 ? static_cast<int>(std::lround((hi - lo).maxCoeff() / z0.grid.cell))
-                                    : options.resolution;
-    if (options.advise && z0.topology.genus != surface_genus)
+                                    : z0_options.resolution;
+    // The automatic choice already searched for the genus and says what it found.
+    if (options.advise && !r.automatic && z0.topology.genus != surface_genus)
         r.advice = genus_advice(surface, surface_genus, is_inside, r.resolution, z0.topology.genus,
-                                options.advisor_seconds);
+                                options.advisor_seconds)
+                       .message;
     if (callbacks.initial)
         callbacks.initial(r.initial.model);
 

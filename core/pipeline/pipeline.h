@@ -13,21 +13,29 @@
 #include "core/anneal/engine/annealer.h"
 #include "core/geom/triangle_mesh.h"
 #include "core/score/fidelity.h"
+#include "core/voxel/auto_resolution.h"
 #include "core/voxel/initial_model.h"
 #include "core/zome/model.h"
 
 namespace zomeify {
 
+//! Resolutions a user may ask for (cells along the longest side); 0 = automatic.
+inline constexpr int kAutoResolution = 0;
+inline constexpr int kMinResolution = 2;
+inline constexpr int kMaxResolution = 256;
+
 struct PipelineOptions
 {
-    //! Cells along the longest side of the bounding box (used when b1 is 0).
-    int resolution = 16;
+    //! Cells along the longest side of the bounding box (used when b1 is 0); kAutoResolution:
+    //! choose_resolution() picks it (auto_resolution.h).
+    int resolution = kAutoResolution;
     //! Voxel edge b1 in mesh units; overrides resolution when > 0.
     double b1 = 0.0;
     //! Stop after Z0 (no annealing).
     bool initial_only = false;
     //! When Z0 misses the genus of the surface, look for a resolution that keeps it (up to
-    //! advisor_seconds) and put the hint in PipelineResult::advice.
+    //! advisor_seconds) and put the hint in PipelineResult::advice. The automatic resolution's
+    //! search for the genus has the same budget.
     bool advise = true;
     double advisor_seconds = 10.0;
     //! Points per side for the fidelity figures of the result (fidelity.h).
@@ -52,6 +60,7 @@ struct PipelineResult
     int resolution = 0;           //!< cells along the longest side actually used
     InitialModel initial;         //!< Z0 and its report
     std::string advice;           //!< the resolution hint when Z0 missed the surface's genus
+    std::optional<AutoResolution> automatic; //!< how the resolution was chosen, when automatic
     std::optional<AnnealResult> anneal; //!< absent with initial_only
     //! The model to write: the best annealed model when the run was cancelled, the final one
     //! otherwise (Z0 with initial_only). Carries the transform and stats_json.

@@ -131,6 +131,12 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
                     {"seconds", r.initial_seconds}};
     if (!r.advice.empty())
         j["advice"] = r.advice;
+    if (r.automatic)
+        j["automatic_resolution"] = {{"resolution", r.automatic->resolution},
+                                     {"genus_kept", r.automatic->genus_kept},
+                                     {"searched_to", r.automatic->searched_to},
+                                     {"seconds", r.automatic->seconds},
+                                     {"message", r.automatic->message}};
     return j.dump(indent);
 }
 

@@ -76,4 +76,28 @@ std::string advice_message(int resolution, long long genus, const AdvisorResult 
     return os.str();
 }
 
+GenusAdvice genus_advice(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
+                         int resolution, long long genus, double seconds)
+{
+    if (genus == surface_genus)
+        return {};
+    // The user wants about this much detail, so look first for the nearest finer grid that keeps
+    // the genus (the smallest one overall may be a useless blob), and only then below their choice.
+    AdvisorOptions advisor;
+    advisor.seconds = seconds;
+    advisor.min_resolution = resolution + 1;
+    advisor.max_resolution = std::max(kAdviceMaxResolution, 2 * resolution);
+    AdvisorResult found = advise_resolution(surface, surface_genus, inside, advisor);
+    if (!found.found && resolution > 4)
+    {
+        advisor.min_resolution = 4;
+        advisor.max_resolution = resolution - 1;
+        const AdvisorResult below = advise_resolution(surface, surface_genus, inside, advisor);
+        if (below.found)
+            found = below;
+    }
+    return {advice_message(resolution, genus, found), found.found ? found.resolution : 0};
+}
+
+
 } // namespace zomeify
