@@ -48,7 +48,7 @@ export class App {
   }
 
   /** Loads mesh or model bytes; returns {ok, kind?, error?}. `run` starts a run after a mesh. */
-  async loadBytes(name, bytes, { run = false, fit = true } = {}) {
+  async loadBytes(name, bytes, { run = false, fit = true, chooseResolution = true } = {}) {
     if (this.running) {
       this.fail(`${name}: a run is in progress; cancel it first`);
       return { ok: false, error: this.lastError };
@@ -72,7 +72,8 @@ export class App {
       this.surfaceEl.textContent = `${name}: ${r.vertices} vertices, ${r.faces} triangles, genus ${r.genus}` +
         (r.repaired?.length ? ` (repaired: ${r.repaired.join('; ')})` : '');
       this.status.note(`${name} loaded.`);
-      this.controls.scheduleEstimate();
+      if (chooseResolution) await this.chooseResolution();
+      else this.controls.scheduleEstimate();
       if (run) return { ...result, run: await this.run() };
     } else {
       this.status.note(`${name}: model loaded.`);
@@ -112,10 +113,20 @@ export class App {
     const { sample } = fetched;
     const [mesh, model] = await Promise.all([fetched.mesh, fetched.model]);
     if (model) await this.loadBytes(sample.id + '.zome.json', model, { fit });
-    await this.loadBytes(sample.mesh, mesh, { fit: !model });
+    await this.loadBytes(sample.mesh, mesh, { fit: !model, chooseResolution: false });
     this.controls.set({ resolution: sample.resolution });
     this.status.note(`Sample: ${sample.label} (${sample.credit}). Drop your own mesh anywhere, or press Run.`);
     if (!model) await this.run();
+  }
+
+  /** The core's resolution for the loaded mesh, set on the slider before any run (issue 26). */
+  async chooseResolution() {
+    try {
+      await this.controls.chooseAutomatically(() => this.bridge.autoResolution());
+    } catch (e) {
+      this.controls.scheduleEstimate(); // the slider keeps its value; the estimate says what it gives
+      console.warn(`automatic resolution: ${e.message}`);
+    }
   }
 
   async openLink(link) {

@@ -56,6 +56,7 @@ export class CoreBridge {
   load(name, bytes) { return this.request(Request.LOAD, { name, bytes }, [bytes]); }
   openLink(link) { return this.request(Request.OPEN_LINK, { link }); }
   estimate(resolution) { return this.request(Request.ESTIMATE, { resolution }); }
+  autoResolution() { return this.request(Request.AUTO_RESOLUTION); }
   run(options) { return this.request(Request.RUN, { options }); }
   cancel() { return this.request(Request.CANCEL); }
   warmUp() { return this.request(Request.WARM_UP); }

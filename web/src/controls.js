@@ -1,9 +1,18 @@
-// The run controls: resolution with a live estimate (and the advisor's warning), time presets,
-// target complexity, threads, advanced weights and seed. Reads them as protocol RunOptions.
+// The run controls: resolution (chosen automatically for each mesh, with a live estimate of balls,
+// size and kits, and the advisor's suggestion as a button), time presets, target complexity,
+// threads, advanced weights and seed. Reads them as protocol RunOptions.
+//
+// Defaults, bounds and presets come from the core at start-up (setSchema: core/pipeline/
+// run_settings.h), so the page, the Session and the CLI share them; these are only the values the
+// form shows before the core is up.
 export const PRESETS = { quick: 5, standard: 30, thorough: 120 };
-// The core's defaults replace these weights at start-up (setDefaults), so the page runs what the CLI does.
-const DEFAULTS = { resolution: 12, preset: 'quick', seconds: 5, target_nodes: 0, threads: 0, seed: 1,
+const DEFAULTS = { resolution: 12, preset: 'standard', seconds: 30, target_nodes: 0, threads: 0, seed: 1,
   weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } };
+// Past these a suggested model is flagged before anyone buys the parts.
+export const LARGE_MODEL = { balls: 3000, metres: 2 };
+// The form's inputs for each bounded option of the core's schema.
+const BOUNDED_INPUTS = { resolution: 'resolution', seconds: 'seconds', target_nodes: 'target', seed: 'seed',
+  proposals: 'proposals' };
 
 // The controls' arithmetic and text, kept pure (no DOM) so web/tests/ can check it.
 
@@ -17,10 +26,26 @@ export function autoThreadCount(cores, maxThreads) {
   return Math.max(1, Math.min((cores || 2) - 1, maxThreads));
 }
 
-/** The estimate line: Z0's counts, and the final model's (target balls, 2.2–2.9 struts per ball). */
+/** "1.2 m" or "85 cm": a model's longest side at real size. */
+export function sizeText(mm) {
+  return mm >= 1000 ? `${(mm / 1000).toFixed(1)} m` : `${Math.round(mm / 10)} cm`;
+}
+
+/** What a model of this estimate costs: balls, struts, size and kits (2.2–2.9 struts per ball). */
+export function billText(e, balls = e.nodes) {
+  const kits = e.kits ? `, about ${e.kits} ${e.kit_name} kit${e.kits === 1 ? '' : 's'}` : '';
+  const size = Number.isFinite(e.size_mm) ? `, ${sizeText(e.size_mm)} across` : '';
+  return `≈ ${balls} balls, ${Math.round(2.2 * balls)}–${Math.round(2.9 * balls)} struts${size}${kits}`;
+}
+
+/** The estimate line for the chosen resolution (balls from the target when one is set). */
 export function estimateText(e, target) {
-  return `Z0: ${e.nodes} balls, ${e.struts} struts · final ≈ ${target} balls, ` +
-    `${Math.round(2.2 * target)}–${Math.round(2.9 * target)} struts`;
+  return `The model: ${billText(e, target)}`;
+}
+
+/** True when a model of this estimate deserves a warning before it is built. */
+export function isLarge(e) {
+  return e.nodes > LARGE_MODEL.balls || e.size_mm > LARGE_MODEL.metres * 1000;
 }
 
 /** The advisor's warning ('' when Z0 keeps the surface's genus). */
@@ -39,22 +64,64 @@ export class Controls {
     this.estimateTimer = null;
     this.estimateSerial = 0;
     this.initialOnly = false; // API only: stop after Z0
+    this.lastEstimate = null; // of the resolution shown, for the run's genus check
+    this.genusConsent = false; // the user chose to run at a resolution that loses the genus
+    this.autoMessage = '';
 
-    this.el('resolution').addEventListener('input', () => {
-      this.el('resolution-value').textContent = this.el('resolution').value;
-      this.scheduleEstimate();
-    });
+    this.el('resolution').addEventListener('input', () => this.set({ resolution: this.el('resolution').value }));
     this.el('preset').addEventListener('change', () => this.presetChanged());
     this.set(DEFAULTS);
   }
 
-  /** The core's default weights (from the wasm module): the form's starting values. */
-  setDefaults(defaults) {
-    if (!defaults || !defaults.weights) return;
+  /**
+   * The core's run settings (core/pipeline/run_settings.h): defaults, bounds and time presets become
+   * the form's starting values and limits. The resolution default (0, automatic) is not a position
+   * of the slider: each mesh gets its own on loading (chooseAutomatically).
+   */
+  setSchema(schema) {
+    if (!schema || !schema.defaults) return;
+    const d = schema.defaults;
+    for (const k of Object.keys(PRESETS)) if (Number.isFinite(schema.presets?.[k])) PRESETS[k] = schema.presets[k];
+    for (const k of ['seconds', 'target_nodes', 'threads', 'seed']) if (Number.isFinite(d[k])) DEFAULTS[k] = d[k];
+    DEFAULTS.preset = presetForSeconds(DEFAULTS.seconds);
     for (const k of Object.keys(DEFAULTS.weights)) {
-      if (Number.isFinite(defaults.weights[k])) DEFAULTS.weights[k] = defaults.weights[k];
+      if (Number.isFinite(d.weights?.[k])) DEFAULTS.weights[k] = d.weights[k];
     }
-    this.set({ weights: DEFAULTS.weights });
+    for (const [key, id] of Object.entries(BOUNDED_INPUTS)) {
+      const b = schema.bounds?.[key];
+      if (!b) continue;
+      this.el(id).min = String(b.min);
+      this.el(id).max = String(b.max);
+    }
+    for (const [k, v] of Object.entries(schema.bounds || {})) {
+      if (k.startsWith('weights.')) Object.assign(this.el('w-' + k.slice(8)), { min: String(v.min), max: String(v.max) });
+    }
+    this.schema = schema;
+    const { resolution, ...rest } = DEFAULTS;
+    this.set(rest);
+  }
+
+  /**
+   * The resolution the core picks for the loaded mesh (the coarsest grid keeping its genus with
+   * enough balls); shown with its bill before anything runs. The user can still move it.
+   */
+  async chooseAutomatically(autoResolution) {
+    const a = await autoResolution();
+    this.set({ resolution: a.resolution });
+    this.genusConsent = !a.kept; // no grid keeps the genus: say so and go on (issue 26)
+    this.autoMessage = `Resolution chosen for this shape: ${a.message}.`;
+    this.showEstimate(a, a.resolution);
+    return a;
+  }
+
+  /**
+   * '' when a run may start; else why not: the estimate knows this resolution loses the genus,
+   * another keeps it, and the user has not agreed.
+   */
+  runBlocker() {
+    const e = this.lastEstimate;
+    if (!e || e.kept || this.genusConsent || Number(this.el('resolution').value) !== e.resolution) return '';
+    return `${adviceText(e, e.resolution)}. Use the suggested resolution, or tick "run anyway".`;
   }
 
   setMaxThreads(n) {
@@ -79,6 +146,9 @@ export class Controls {
   /** Applies any subset of RunOptions (plus `preset`). */
   set(o) {
     if (o.resolution !== undefined) {
+      // A new resolution: the automatic choice's note and any consent to lose the genus go.
+      this.autoMessage = '';
+      this.genusConsent = false;
       this.el('resolution').value = o.resolution;
       this.el('resolution-value').textContent = String(o.resolution);
       this.scheduleEstimate();
@@ -130,28 +200,66 @@ export class Controls {
     this.estimateTimer = setTimeout(() => this.updateEstimate(), 200);
   }
 
-  /** Z0 at the chosen resolution: nodes now, and the rough size of the final model. */
+  /** Z0 at the chosen resolution: the model's bill, and the advisor's suggestion. */
   async updateEstimate() {
     const serial = ++this.estimateSerial;
-    const out = this.el('estimate');
-    const warn = this.el('advice');
     const resolution = Number(this.el('resolution').value);
     let e;
     try {
       e = await this.estimateFn(resolution);
     } catch {
       // No estimate (e.g. no mesh loaded): clear the line and the last mesh's warning with it.
-      if (serial === this.estimateSerial) {
-        out.textContent = '';
-        warn.textContent = '';
-        warn.hidden = true;
-      }
+      if (serial === this.estimateSerial) this.showEstimate(null, resolution);
       return;
     }
     if (serial !== this.estimateSerial) return;
+    this.showEstimate(e, resolution);
+  }
+
+  /** The estimate line and, when the genus is lost, the advice with a button for its resolution. */
+  showEstimate(e, resolution) {
+    const out = this.el('estimate');
+    const warn = this.el('advice');
+    this.lastEstimate = e ? { ...e, resolution } : null;
+    warn.textContent = '';
+    if (!e) {
+      out.textContent = '';
+      warn.replaceChildren();
+      warn.hidden = true;
+      return;
+    }
     const target = Number(this.el('target').value) || e.nodes;
-    out.textContent = estimateText(e, target);
-    warn.textContent = adviceText(e, resolution);
+    out.textContent = [this.autoMessage, estimateText(e, target) + (isLarge(e) ? ' — a very large build.' : '')]
+      .filter(Boolean).join(' ');
+    warn.replaceChildren();
     warn.hidden = e.kept;
+    if (e.kept) return;
+    warn.append(adviceText(e, resolution) + '.');
+    if (e.advice_resolution > 0 && e.advice_resolution !== resolution) this.appendSuggestion(warn, e.advice_resolution);
+    const consent = document.createElement('label');
+    const box = Object.assign(document.createElement('input'), { type: 'checkbox', id: 'genus-consent',
+      checked: this.genusConsent });
+    box.addEventListener('change', () => { this.genusConsent = box.checked; });
+    consent.append(box, ' run anyway');
+    warn.append(' ', consent);
+  }
+
+  /** A button that moves the slider to `resolution`, labelled with what that model would cost. */
+  async appendSuggestion(warn, resolution) {
+    const button = Object.assign(document.createElement('button'), { type: 'button', id: 'use-advice',
+      textContent: `Use ${resolution} cells` });
+    button.addEventListener('click', () => this.set({ resolution }));
+    warn.append(' ', button);
+    try {
+      const e = await this.estimateFn(resolution);
+      button.textContent = `Use ${resolution} cells (${billText(e)})`;
+      if (isLarge(e)) {
+        button.classList.add('large');
+        button.title = 'A very large build: check the size and the kits before buying parts.';
+        button.textContent += ' — very large';
+      }
+    } catch {
+      // The label keeps the resolution alone.
+    }
   }
 }

@@ -37,7 +37,11 @@ bridge.on(Event.FATAL, ({ error }) => {
   rejectReady(new Error(error));
 });
 
-$('run').addEventListener('click', () => app.run().catch((e) => status.error(e.message)));
+$('run').addEventListener('click', () => {
+  const blocked = controls.runBlocker(); // a resolution known to lose the genus needs the user's word
+  if (blocked) status.error(blocked);
+  else app.run().catch((e) => status.error(e.message));
+});
 $('cancel').addEventListener('click', () => app.cancel());
 $('share').addEventListener('click', () => app.shareLink().catch((e) => status.error(e.message)));
 $('show-faces').addEventListener('change', (e) => viewer.setFacesVisible(e.target.checked));
@@ -73,7 +77,7 @@ async function boot() {
   const started = await bridge.start();
   Object.assign(info, started);
   controls.setMaxThreads(started.maxThreads);
-  if (started.defaults) controls.setDefaults(started.defaults);
+  if (started.schema) controls.setSchema(started.schema);
   if (!info.crossOriginIsolated) {
     $('fallback-note').hidden = false;
   }

@@ -5,10 +5,12 @@
 
 /** Requests (page → worker). */
 export const Request = Object.freeze({
-  INIT: 'init',           // {wasmBase, threaded}            → {threaded, maxThreads}
+  INIT: 'init',           // {wasmBase, threaded}            → {threaded, maxThreads, defaults, schema}
   LOAD: 'load',           // {name, bytes: ArrayBuffer}      → {kind: 'mesh'|'model', report?}
   OPEN_LINK: 'openLink',  // {link}                          → {kind: 'model'}
-  ESTIMATE: 'estimate',   // {resolution}                    → {nodes, struts, genus, surface_genus, kept, advice}
+  ESTIMATE: 'estimate',   // {resolution}                    → {nodes, struts, genus, surface_genus, kept, advice,
+                          //                                    advice_resolution, size_mm, kits, kit_name}
+  AUTO_RESOLUTION: 'autoResolution', // {}                   → estimate's fields + {resolution, message, searched_to}
   RUN: 'run',             // {options: RunOptions}           → final Progress (after the run ends)
   CANCEL: 'cancel',       // {}                              → {}   (the run's reply follows when it stops)
   SNAPSHOT: 'snapshot',   // {}                              → Snapshot
@@ -29,7 +31,7 @@ export const Event = Object.freeze({
 
 /**
  * @typedef {object} RunOptions
- * @property {number} [resolution]   cells along the longest side for Z0 (2..256)
+ * @property {number} [resolution]   cells along the longest side for Z0 (bounds: the core's schema)
  * @property {number} [seconds]      annealing time budget
  * @property {number} [target_nodes] N_target; 0 = the node count of Z0
  * @property {number} [threads]      annealing threads (clamped to maxThreads)

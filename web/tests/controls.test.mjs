@@ -3,10 +3,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { Controls, PRESETS, presetForSeconds, autoThreadCount, estimateText, adviceText } from '../src/controls.js';
-import { fakeRoot, setGlobal } from './helpers/fake_dom.mjs';
+import { Controls, PRESETS, presetForSeconds, autoThreadCount, estimateText, adviceText, billText, sizeText, isLarge }
+  from '../src/controls.js';
+import { fakeRoot, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
 
 setGlobal('navigator', { hardwareConcurrency: 3 }); // "auto" threads = 2 in this file
+setGlobal('document', fakeDocument()); // the advice's button and consent box are made with it
 
 /** Controls on a fake form; the estimate calls are recorded and answered by `answer`. */
 function makeControls(answer = async (r) => ({ nodes: 10 * r, struts: 20 * r, kept: true })) {
@@ -19,9 +21,16 @@ function makeControls(answer = async (r) => ({ nodes: 10 * r, struts: 20 * r, ke
   return { controls, el, calls };
 }
 
-test('estimate line: Z0\'s counts, and 2.2–2.9 struts per ball of the final model', () => {
-  assert.equal(estimateText({ nodes: 192, struts: 384 }, 192), 'Z0: 192 balls, 384 struts · final ≈ 192 balls, 422–557 struts');
-  assert.equal(estimateText({ nodes: 192, struts: 384 }, 1000), 'Z0: 192 balls, 384 struts · final ≈ 1000 balls, 2200–2900 struts');
+test('estimate line: balls, 2.2–2.9 struts per ball, size at real scale and kits', () => {
+  const e = { nodes: 192, struts: 384, size_mm: 898, kits: 2, kit_name: 'Creator 3' };
+  assert.equal(estimateText(e, 192), 'The model: ≈ 192 balls, 422–557 struts, 90 cm across, about 2 Creator 3 kits');
+  assert.equal(estimateText({ ...e, kits: 1 }, 1000),
+    'The model: ≈ 1000 balls, 2200–2900 struts, 90 cm across, about 1 Creator 3 kit');
+  assert.equal(billText({ nodes: 8124, size_mm: 3293 }), '≈ 8124 balls, 17873–23560 struts, 3.3 m across');
+  assert.equal(sizeText(1234), '1.2 m');
+  assert.equal(isLarge({ nodes: 8124, size_mm: 3293 }), true);
+  assert.equal(isLarge({ nodes: 600, size_mm: 1100 }), false);
+  assert.equal(isLarge({ nodes: 600, size_mm: 2500 }), true);
 });
 
 test('advice: nothing when Z0 keeps the genus; the advisor\'s text, or the genus mismatch spelled out', () => {
@@ -50,20 +59,70 @@ test('auto threads: all cores but one, at least 1, at most the build\'s maximum'
   assert.equal(autoThreadCount(16, 1), 1); // single-threaded build
 });
 
-test("the core's default weights (sent at start-up) become the form's", () => {
-  const { controls } = makeControls();
-  controls.setDefaults({ weights: { dist: 12, surface: 7, unknown: 3, fold: 'x' } });
-  const w = controls.get().weights;
-  assert.equal(w.dist, 12);
-  assert.equal(w.surface, 7);
-  assert.equal(w.fold, 1); // not a number: the page's own default stays
-  assert.equal(w.unknown, undefined);
-  controls.setDefaults({ weights: { dist: 30, surface: 100 } }); // DEFAULTS are module state: put them back
+test("the core's run settings (sent at start-up) become the form's defaults and bounds", () => {
+  const { controls, el } = makeControls();
+  el('resolution').value = '17';
+  controls.setSchema({ defaults: { resolution: 0, seconds: 120, seed: 3, weights: { dist: 12, surface: 7, unknown: 3,
+    fold: 'x' } }, bounds: { resolution: { min: 2, max: 256 }, seconds: { min: 0.1, max: 604800 },
+    'weights.dist': { min: 0, max: 1e6 } }, presets: { quick: 5, standard: 30, thorough: 120 } });
+  const o = controls.get();
+  assert.equal(o.weights.dist, 12);
+  assert.equal(o.weights.surface, 7);
+  assert.equal(o.weights.fold, 1); // not a number: the page's own default stays
+  assert.equal(o.weights.unknown, undefined);
+  assert.equal(o.seconds, 120);
+  assert.equal(el('preset').value, 'thorough');
+  assert.equal(o.seed, 3);
+  assert.equal(o.resolution, 17); // "automatic" is chosen per mesh, not a slider position
+  assert.equal(el('resolution').min, '2');
+  assert.equal(el('resolution').max, '256');
+  assert.equal(el('seconds').max, '604800');
+  assert.equal(el('w-dist').max, '1000000');
+  // DEFAULTS are module state: put them back.
+  controls.setSchema({ defaults: { seconds: 30, seed: 1, weights: { dist: 30, surface: 100 } } });
+  clearTimeout(controls.estimateTimer);
+});
+
+test('automatic resolution: set on the slider with its message; a lost genus needs consent unless none keeps it', async () => {
+  const { controls, el } = makeControls(async (r) => ({ nodes: 10 * r, struts: 20 * r, kept: r >= 14, genus: 0,
+    surface_genus: 1, advice: r < 14 ? `at ${r} cells the handle of this shape closes up; 14 keeps it` : '',
+    advice_resolution: r < 14 ? 14 : 0, size_mm: r * 75, kits: 1, kit_name: 'Creator 3' }));
+  const a = await controls.chooseAutomatically(async () => ({ resolution: 14, nodes: 528, struts: 1056, kept: true,
+    genus: 1, surface_genus: 1, message: '14 cells (528 balls): the coarsest grid that keeps the hole through it',
+    size_mm: 1048, kits: 1, kit_name: 'Creator 3' }));
+  clearTimeout(controls.estimateTimer);
+  assert.equal(a.resolution, 14);
+  assert.equal(el('resolution').value, '14');
+  assert.match(el('estimate').textContent, /^Resolution chosen for this shape: 14 cells \(528 balls\)/);
+  assert.equal(controls.runBlocker(), '');
+  // The user moves the slider to 8: the estimate knows the handle closes; the run waits for consent.
+  controls.set({ resolution: 8 });
+  clearTimeout(controls.estimateTimer);
+  await controls.updateEstimate();
+  assert.equal(el('estimate').textContent.startsWith('Resolution chosen'), false);
+  assert.match(controls.runBlocker(), /closes up; 14 keeps it/);
+  const button = el('advice').children.find((c) => c.id === 'use-advice');
+  assert.ok(button, 'the suggestion is a button');
+  await new Promise((resolve) => setTimeout(resolve, 0));
+  assert.match(button.textContent, /^Use 14 cells \(≈ 140 balls/);
+  const consent = el('advice').children.find((c) => c.tagName === 'LABEL').children[0];
+  consent.checked = true;
+  consent.dispatch('change');
+  assert.equal(controls.runBlocker(), '');
+  button.dispatch('click');
+  clearTimeout(controls.estimateTimer);
+  assert.equal(el('resolution').value, '14');
+  // No grid keeps the genus: the choice says so and the run goes on without asking.
+  await controls.chooseAutomatically(async () => ({ resolution: 12, nodes: 600, kept: false, genus: 0,
+    surface_genus: 1, message: 'no grid up to 64 cells keeps the hole through it', size_mm: 900 }));
+  clearTimeout(controls.estimateTimer);
+  assert.equal(controls.runBlocker(), '');
+  assert.match(el('estimate').textContent, /no grid up to 64 cells/);
 });
 
 test('the form read as RunOptions: defaults, and empty or bad fields fall back', () => {
   const { controls, el } = makeControls();
-  assert.deepEqual(controls.get(), { resolution: 12, seconds: 5, target_nodes: 0, threads: 2, seed: 1, proposals: 0,
+  assert.deepEqual(controls.get(), { resolution: 12, seconds: 30, target_nodes: 0, threads: 2, seed: 1, proposals: 0,
     initial_only: false, weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } });
   el('seed').value = '';
   el('w-fair').value = 'abc';
@@ -102,8 +161,8 @@ test('updateEstimate: uses the target when set, shows the advice, and a stale an
   release({ nodes: 1, struts: 1, kept: true }); // the answer for resolution 6 arrives last
   await first;
   assert.deepEqual(calls, [6, 8]);
-  assert.equal(el('estimate').textContent, 'Z0: 96 balls, 190 struts · final ≈ 100 balls, 220–290 struts');
-  assert.equal(el('advice').textContent, "at 8 cells the model's genus is 0, the surface's 1");
+  assert.equal(el('estimate').textContent, 'The model: ≈ 100 balls, 220–290 struts');
+  assert.equal(el('advice').text, "at 8 cells the model's genus is 0, the surface's 1. run anyway");
   assert.equal(el('advice').hidden, false);
 });
 
@@ -114,6 +173,6 @@ test('updateEstimate: a failed estimate (no mesh) clears the line and the old wa
   el('advice').hidden = false;
   await controls.updateEstimate();
   assert.equal(el('estimate').textContent, '');
-  assert.equal(el('advice').textContent, '');
+  assert.equal(el('advice').text, '');
   assert.equal(el('advice').hidden, true);
 });

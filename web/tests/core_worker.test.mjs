@@ -23,6 +23,10 @@ bridge.worker = {
     self.onmessage({ data: msg });
   },
 };
+// What the fake core's runSettingsSchema() says: init hands it over, with its defaults.
+const SCHEMA_JSON = { defaults: { resolution: 0, weights: { dist: 30, surface: 100 } },
+  bounds: { resolution: { min: 2, max: 256 } }, presets: { standard: 30 } };
+const SCHEMA = { defaults: SCHEMA_JSON.defaults, schema: SCHEMA_JSON };
 const fatal = [];
 bridge.on(Event.FATAL, (e) => fatal.push(e.error));
 const snapshots = [];
@@ -49,7 +53,7 @@ test('a failed init rejects and also raises the fatal event with the same messag
 
 test('init loads the single-threaded module when not threaded', async () => {
   assert.deepEqual(await bridge.request('init', { wasmBase, threaded: false }),
-    { threaded: false, maxThreads: 1, defaults: { resolution: 12, weights: { dist: 30, surface: 100 } } });
+    { threaded: false, maxThreads: 1, ...SCHEMA });
 });
 
 test('every request gets exactly one reply, with its own id', () => {
@@ -110,7 +114,7 @@ test('single-threaded run: options reach the core unchanged; progress and a chan
 
 test('threaded run: a second run is refused, cancel stops the first with state "cancelled"', async () => {
   assert.deepEqual(await bridge.request('init', { wasmBase, threaded: true }),
-    { threaded: true, maxThreads: 4, defaults: { resolution: 12, weights: { dist: 30, surface: 100 } } });
+    { threaded: true, maxThreads: 4, ...SCHEMA });
   const first = bridge.run({ seconds: 30 });
   await assert.rejects(bridge.run({ seconds: 30 }), { message: 'a run is in progress' });
   await new Promise((resolve) => setTimeout(resolve, 250)); // a couple of 100 ms progress polls

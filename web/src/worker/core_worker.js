@@ -48,7 +48,9 @@ async function init({ wasmBase, threaded: wantThreads }) {
     printErr: (t) => console.warn('[core]', t),
   });
   session = new core.Session();
-  return { threaded: core.threadedBuild(), maxThreads: core.maxThreads(), defaults: JSON.parse(core.defaultRunOptions()) };
+  // The core's run settings (defaults, bounds, presets): the page's form is built from them.
+  const schema = JSON.parse(core.runSettingsSchema());
+  return { threaded: core.threadedBuild(), maxThreads: core.maxThreads(), defaults: schema.defaults, schema };
 }
 
 function runThreaded(options) {
@@ -125,6 +127,7 @@ const handlers = {
     return result;
   },
   [Request.ESTIMATE]: ({ resolution }) => parse(session.estimate(resolution)),
+  [Request.AUTO_RESOLUTION]: () => parse(session.autoResolution()),
   [Request.RUN]: ({ options }) => {
     if (running) throw new Error('a run is in progress');
     return threaded ? runThreaded(options) : runBlocking(options);
