@@ -162,7 +162,7 @@ test('updateEstimate: uses the target when set, shows the advice, and a stale an
   await first;
   assert.deepEqual(calls, [6, 8]);
   assert.equal(el('estimate').textContent, 'The model: ≈ 100 balls, 220–290 struts');
-  assert.equal(el('advice').text, "at 8 cells the model's genus is 0, the surface's 1. run anyway");
+  assert.equal(el('advice').text, "at 8 cells the model's genus is 0, the surface's 1.  run anyway");
   assert.equal(el('advice').hidden, false);
 });
 
