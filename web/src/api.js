@@ -23,7 +23,8 @@ export function installApi(app, { ready, warmedUp, info }) {
     /** Runs with RunOptions (web/src/protocol.js); resolves with the final progress. */
     run: (options) => app.run(options),
     cancel: () => app.cancel(),
-    setOptions: (options) => app.controls.set(options),
+    /** A resolution set here is kept for the meshes loaded next (scripts choose; the page does not). */
+    setOptions: (options) => app.controls.set({ ...options, pinned: options.resolution !== undefined }),
     options: () => app.controls.get(),
     /** Runs finished so far (a run started by a drop can be waited for with it). */
     runs: () => app.runCount,

@@ -67,6 +67,7 @@ export class Controls {
     this.lastEstimate = null; // of the resolution shown, for the run's genus check
     this.genusConsent = false; // the user chose to run at a resolution that loses the genus
     this.autoMessage = '';
+    this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
 
     this.el('resolution').addEventListener('input', () => this.set({ resolution: this.el('resolution').value }));
     this.el('preset').addEventListener('change', () => this.presetChanged());
@@ -106,6 +107,10 @@ export class Controls {
    * enough balls); shown with its bill before anything runs. The user can still move it.
    */
   async chooseAutomatically(autoResolution) {
+    if (this.pinned) {
+      this.scheduleEstimate();
+      return null;
+    }
     const a = await autoResolution();
     this.set({ resolution: a.resolution });
     this.genusConsent = !a.kept; // no grid keeps the genus: say so and go on (issue 26)
@@ -148,6 +153,7 @@ export class Controls {
     if (o.resolution !== undefined) {
       // A new resolution: the automatic choice's note and any consent to lose the genus go.
       this.autoMessage = '';
+    this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
       this.genusConsent = false;
       this.el('resolution').value = o.resolution;
       this.el('resolution-value').textContent = String(o.resolution);
@@ -168,6 +174,7 @@ export class Controls {
     if (o.seed !== undefined) this.el('seed').value = o.seed;
     if (o.proposals !== undefined) this.el('proposals').value = o.proposals || '';
     if (o.initial_only !== undefined) this.initialOnly = Boolean(o.initial_only);
+    if (o.pinned !== undefined) this.pinned = Boolean(o.pinned);
     for (const [k, v] of Object.entries(o.weights || {})) this.el('w-' + k).value = v;
   }
 
@@ -207,9 +214,10 @@ export class Controls {
     let e;
     try {
       e = await this.estimateFn(resolution);
-    } catch {
-      // No estimate (e.g. no mesh loaded): clear the line and the last mesh's warning with it.
-      if (serial === this.estimateSerial) this.showEstimate(null, resolution);
+    } catch (err) {
+      // No mesh loaded: clear the line and the last mesh's warning with it. Busy with a run: the
+      // line still describes the model being made.
+      if (serial === this.estimateSerial && !/in progress/.test(err?.message)) this.showEstimate(null, resolution);
       return;
     }
     if (serial !== this.estimateSerial) return;
