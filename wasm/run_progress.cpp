@@ -51,6 +51,8 @@ std::string RunProgress::json() const
     j["valid"] = valid;
     j["genus"] = genus;
     j["surface_genus"] = surface_genus;
+    j["gap_mm"] = gap_mm;
+    j["rms_mm"] = rms_mm;
     j["note"] = note;
     j["error"] = error;
     return j.dump();

@@ -42,6 +42,10 @@ struct RunProgress
     bool valid = false;    //!< at the end: the model passed validate()
     long long genus = 0;   //!< at the end: genus of the model
     long long surface_genus = 0;
+    //! Fidelity of the model so far (core/score, fewer samples during the run, all at the end):
+    //! the largest gap and the typical (RMS) distance both ways, in mm at real size; 0 = not yet.
+    double gap_mm = 0.0;
+    double rms_mm = 0.0;
     std::string note; //!< e.g. the advisor's hint
     std::string error;
 

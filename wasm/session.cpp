@@ -20,8 +20,8 @@
 #include "core/surface/report_text.h"
 #include "core/voxel/advisor.h"
 #include "core/voxel/auto_resolution.h"
-#include "core/zome/real_sizes.h"
 #include "core/voxel/initial_model.h"
+#include "core/zome/real_sizes.h"
 #include "core/zome/slots.h"
 
 namespace zomeify::web
@@ -291,6 +291,7 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
             });
 
         double last_snapshot = -1.0;
+        double last_fidelity = -1.0;
         PipelineCallbacks callbacks;
         callbacks.cancel = &control.cancel_flag();
         callbacks.initial = [&](const ZomeModel &z0)
@@ -312,10 +313,28 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
             // Not on the final report: the engine makes it under its commit lock, which
             // snapshot() takes too; the final model comes from run_pipeline's result anyway.
             const double now = clock.seconds();
+            std::optional<Fidelity> fidelity;
             if (!ap.finished && (last_snapshot < 0.0 || now - last_snapshot >= 0.2))
             {
                 last_snapshot = now;
-                set_model(annealer.snapshot(), "run");
+                ZomeModel snapshot = annealer.snapshot();
+                // How close the model is so far, every 2 s: 4,000 points a side keep it to a few ms
+                // of this thread's time (about 1% of the run).
+                if (now - last_fidelity >= 2.0)
+                {
+                    last_fidelity = now;
+                    FidelityOptions quick;
+                    quick.samples_per_side = 4000;
+                    try
+                    {
+                        fidelity = measure_fidelity(snapshot, *s.projector, quick);
+                    }
+                    catch (const InvalidInputError &)
+                    {
+                        // A model without faces has no distance yet; the figure waits for the next one.
+                    }
+                }
+                set_model(std::move(snapshot), "run");
             }
             control.update(
                 [&](RunProgress &p)
@@ -330,6 +349,11 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
                     p.commits = ap.commits;
                     p.nodes = ap.nodes;
                     p.struts = ap.struts;
+                    if (fidelity)
+                    {
+                        p.gap_mm = fidelity->hausdorff * kMmPerB0;
+                        p.rms_mm = fidelity->rms_symmetric * kMmPerB0;
+                    }
                 });
         };
 
@@ -354,6 +378,11 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
                 p.valid = result.model_valid;
                 p.genus = result.model_genus;
                 p.surface_genus = result.surface_genus;
+                if (result.model_valid)
+                {
+                    p.gap_mm = result.fidelity.hausdorff * kMmPerB0;
+                    p.rms_mm = result.fidelity.rms_symmetric * kMmPerB0;
+                }
                 p.note = result.advice;
                 if (result.automatic && !result.automatic->genus_kept)
                     p.note = result.automatic->message;

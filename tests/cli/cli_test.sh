@@ -63,6 +63,13 @@ done
 if [ -s "$tmp/a.zome.json" ] && [ "$("${cli[@]}" parts "$tmp/a.zome.json" --csv)" = "$("${cli[@]}" parts "$tmp/b.zome.json" --csv)" ] \
    && [ "$("${cli[@]}" parts "$tmp/a.zome.json" --csv)" = "$("${cli[@]}" parts "$tmp/a.vef" --csv)" ]; then ok; else bad "run not repeatable"; fi
 expect_output "run 2 threads"   'on 2 threads: .*genus 0' run "$mesh" --resolution 8 --proposals 20000 --threads 2 -o "$tmp/c.zome.json"
+# No --resolution: the automatic one (core/voxel/auto_resolution.h), which `--resolution auto` names.
+expect_output "run auto res"    'Z0 of bunny\.obj at 11 cells .*Resolution chosen automatically: 11 cells \(576 balls\): the coarsest grid with at least 500 balls' \
+  run "$mesh" --initial-only -o "$tmp/auto.zome.json" --stats "$tmp/auto.json"
+if grep -q '"automatic_resolution"' "$tmp/auto.json"; then ok; else bad "run stats lack automatic_resolution"; fi
+expect_output "run --res auto"  'at 11 cells .*chosen automatically' run "$mesh" --resolution auto --initial-only -o "$tmp/auto.zome.json"
+expect_error "run res 1"        'automatic \(0\) or from 2 to 256' run "$mesh" --resolution 1 -o "$tmp/x.zome.json"
+expect_error "run res 300"      '--resolution.*256'      run "$mesh" --resolution 300 -o "$tmp/x.zome.json"
 expect_error "run bad format"   'unknown model format'   run "$mesh" -o "$tmp/x.stl"
 expect_error "run no -o"        'missing -o'             run "$mesh"
 expect_error "run both scales"  'not both'               run "$mesh" --resolution 8 --b1 0.2 -o "$tmp/x.zome.json"
