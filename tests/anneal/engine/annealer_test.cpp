@@ -38,7 +38,7 @@ AnnealOptions deterministic_options(uint64_t proposals)
 // and one thread. The same constant must come out natively and in wasm; it changes legitimately
 // when an operator, the energy, the schedule or the random stream changes (then update it, once,
 // from the native run's printed value, and check that wasm agrees).
-constexpr uint64_t kBunnyGoldenHash = 0xde54d496c60091e7ULL;
+constexpr uint64_t kBunnyGoldenHash = 0x54d704cac658c6d0ULL;
 
 TEST(Annealer, OneThreadFixedSeedIsBitIdentical)
 {
