@@ -1,6 +1,8 @@
 #include "wasm/session.h"
 
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "core/base/errors.h"
@@ -89,21 +91,28 @@ InitialModelOptions z0_options(int resolution, long long genus)
     return o;
 }
 
-// A rough bill for a model of `balls` balls across `cells` B1 cells: its size at real scale and
-// how many of the largest standard kit it takes by balls (the struts of a finished model come to
-// 2.2-2.9 per ball, which such a kit also covers).
+// A rough bill for a finished model of `balls` balls from Z0 across `cells` B1 cells: its size at
+// real scale, and the kits to buy for the strut mix of a typical finished model (the bunny at 11
+// cells after 30 s: 2.7 struts per ball, per kind B0..R2 below), planned as `zomeify parts` plans.
 nlohmann::json size_estimate(const InitialModel &z0, size_t balls)
 {
+    static constexpr std::array<double, kStrutKindCount> kStrutsPerBall = {0.411, 0.534, 0.108, 0.489, 0.446,
+                                                                           0.129, 0.239, 0.313, 0.031};
     const auto &dims = z0.report.grid.dims;
     const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
-    const Kit *largest = &standard_kits().front();
-    for (const Kit &k : standard_kits())
-        if (k.balls > largest->balls)
-            largest = &k;
-    const size_t kits = (balls + largest->balls - 1) / largest->balls;
-    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0},
-            {"kits", kits},
-            {"kit_name", std::string(largest->name)}};
+    PartsList parts;
+    parts.balls = balls;
+    for (size_t k = 0; k < kStrutKindCount; ++k)
+        parts.struts[k] = static_cast<size_t>(std::ceil(kStrutsPerBall[k] * static_cast<double>(balls)));
+    const KitPlan plan = plan_kits(parts);
+    size_t kits = 0;
+    std::string text;
+    for (const auto &[kit, n] : plan.kits)
+    {
+        kits += n;
+        text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
+    }
+    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0}, {"kits", kits}, {"kit_plan", text}};
 }
 
 } // namespace

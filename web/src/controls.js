@@ -33,7 +33,7 @@ export function sizeText(mm) {
 
 /** What a model of this estimate costs: balls, struts, size and kits (2.2–2.9 struts per ball). */
 export function billText(e, balls = e.nodes) {
-  const kits = e.kits ? `, about ${e.kits} ${e.kit_name} kit${e.kits === 1 ? '' : 's'}` : '';
+  const kits = e.kit_plan ? `, kits: about ${e.kit_plan}` : '';
   const size = Number.isFinite(e.size_mm) ? `, ${sizeText(e.size_mm)} across` : '';
   return `≈ ${balls} balls, ${Math.round(2.2 * balls)}–${Math.round(2.9 * balls)} struts${size}${kits}`;
 }

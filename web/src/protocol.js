@@ -9,7 +9,7 @@ export const Request = Object.freeze({
   LOAD: 'load',           // {name, bytes: ArrayBuffer}      → {kind: 'mesh'|'model', report?}
   OPEN_LINK: 'openLink',  // {link}                          → {kind: 'model'}
   ESTIMATE: 'estimate',   // {resolution}                    → {nodes, struts, genus, surface_genus, kept, advice,
-                          //                                    advice_resolution, size_mm, kits, kit_name}
+                          //                                    advice_resolution, size_mm, kits, kit_plan}
   AUTO_RESOLUTION: 'autoResolution', // {}                   → estimate's fields + {resolution, message, searched_to}
   RUN: 'run',             // {options: RunOptions}           → final Progress (after the run ends)
   CANCEL: 'cancel',       // {}                              → {}   (the run's reply follows when it stops)

@@ -22,10 +22,9 @@ function makeControls(answer = async (r) => ({ nodes: 10 * r, struts: 20 * r, ke
 }
 
 test('estimate line: balls, 2.2–2.9 struts per ball, size at real scale and kits', () => {
-  const e = { nodes: 192, struts: 384, size_mm: 898, kits: 2, kit_name: 'Creator 3' };
-  assert.equal(estimateText(e, 192), 'The model: ≈ 192 balls, 422–557 struts, 90 cm across, about 2 Creator 3 kits');
-  assert.equal(estimateText({ ...e, kits: 1 }, 1000),
-    'The model: ≈ 1000 balls, 2200–2900 struts, 90 cm across, about 1 Creator 3 kit');
+  const e = { nodes: 192, struts: 384, size_mm: 898, kits: 2, kit_plan: '1 Creator 3 + 1 Basic' };
+  assert.equal(estimateText(e, 192),
+    'The model: ≈ 192 balls, 422–557 struts, 90 cm across, kits: about 1 Creator 3 + 1 Basic');
   assert.equal(billText({ nodes: 8124, size_mm: 3293 }), '≈ 8124 balls, 17873–23560 struts, 3.3 m across');
   assert.equal(sizeText(1234), '1.2 m');
   assert.equal(isLarge({ nodes: 8124, size_mm: 3293 }), true);
@@ -86,10 +85,10 @@ test("the core's run settings (sent at start-up) become the form's defaults and 
 test('automatic resolution: set on the slider with its message; a lost genus needs consent unless none keeps it', async () => {
   const { controls, el } = makeControls(async (r) => ({ nodes: 10 * r, struts: 20 * r, kept: r >= 14, genus: 0,
     surface_genus: 1, advice: r < 14 ? `at ${r} cells the handle of this shape closes up; 14 keeps it` : '',
-    advice_resolution: r < 14 ? 14 : 0, size_mm: r * 75, kits: 1, kit_name: 'Creator 3' }));
+    advice_resolution: r < 14 ? 14 : 0, size_mm: r * 75, kits: 1, kit_plan: '1 Creator 3' }));
   const a = await controls.chooseAutomatically(async () => ({ resolution: 14, nodes: 528, struts: 1056, kept: true,
     genus: 1, surface_genus: 1, message: '14 cells (528 balls): the coarsest grid that keeps the hole through it',
-    size_mm: 1048, kits: 1, kit_name: 'Creator 3' }));
+    size_mm: 1048, kits: 1, kit_plan: '1 Creator 3' }));
   clearTimeout(controls.estimateTimer);
   assert.equal(a.resolution, 14);
   assert.equal(el('resolution').value, '14');
