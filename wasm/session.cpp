@@ -383,7 +383,8 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
                     p.commits = result.anneal->stats.commits;
                     p.proposals = result.anneal->stats.proposals;
                 }
-                p.fraction = 1.0;
+                if (!control.cancel_requested())
+                    p.fraction = 1.0; // a cancelled run shows how far it got
                 p.valid = result.model_valid;
                 p.genus = result.model_genus;
                 p.surface_genus = result.surface_genus;

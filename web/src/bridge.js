@@ -1,5 +1,11 @@
 // The page's only door to the core: starts the worker, sends typed requests (protocol.js) and
 // returns promises; events (progress, snapshots) go to listeners. Nothing here blocks.
+//
+// Cancel in the single-threaded build: there a run blocks the worker, which cannot read a Cancel
+// until the run ends. So the bridge ends the worker instead and starts a fresh one with the mesh
+// and the last model it kept (the files the page loaded, and the checkpoints a run sends every
+// second); the run's promise resolves at once as cancelled, and later requests wait for the new
+// worker.
 import { Request, Event } from './protocol.js';
 
 export class CoreBridge {
@@ -9,17 +15,53 @@ export class CoreBridge {
     this.pending = new Map();
     this.listeners = { [Event.PROGRESS]: [], [Event.SNAPSHOT]: [], [Event.FATAL]: [] };
     this.info = null;
+    this.wasmBase = null;
+    this.restarted = null; // a promise while a fresh worker is being set up
+    this.kept = { mesh: null, model: null }; // what a fresh worker must load: {name, bytes} or {link}
+    this.runRequest = null; // {id, lastProgress} of the run in progress
   }
 
   /** Starts the worker and loads the threaded build when the page is cross-origin isolated. */
   async start() {
     const threaded = self.crossOriginIsolated === true && typeof SharedArrayBuffer === 'function';
+    this.wasmBase = new URL('wasm/', document.baseURI).href;
+    this.spawn();
+    this.info = await this.send(Request.INIT, { wasmBase: this.wasmBase, threaded });
+    return this.info;
+  }
+
+  spawn() {
     this.worker = new Worker(new URL('./worker/core_worker.js', import.meta.url), { type: 'module' });
     this.worker.onmessage = ({ data }) => this.receive(data);
     this.worker.onerror = (e) => this.emit(Event.FATAL, { error: e.message || 'the core worker failed to start' });
-    const wasmBase = new URL('wasm/', document.baseURI).href;
-    this.info = await this.request(Request.INIT, { wasmBase, threaded });
-    return this.info;
+  }
+
+  /**
+   * Ends the blocked worker of a single-threaded run and sets up a fresh one with the mesh and the
+   * last model. Returns the cancelled run's final progress at once.
+   */
+  restart() {
+    const run = this.runRequest;
+    this.runRequest = null;
+    this.worker.terminate();
+    const abandoned = [...this.pending.entries()];
+    this.pending.clear();
+    const final = { ...(run?.lastProgress || { seconds: 0, nodes: 0, struts: 0 }), state: 'cancelled',
+      note: 'The run was stopped; the model as it was at the last checkpoint (within a second) is kept.' };
+    for (const [id, entry] of abandoned) {
+      if (id === run?.id) entry.resolve(final);
+      else entry.reject(new Error('cancelled'));
+    }
+    this.spawn();
+    const { mesh, model } = this.kept;
+    this.restarted = (async () => {
+      await this.send(Request.INIT, { wasmBase: this.wasmBase, threaded: false });
+      if (mesh) await this.send(Request.LOAD, { name: mesh.name, bytes: mesh.bytes.slice(0) });
+      if (model?.link) await this.send(Request.OPEN_LINK, { link: model.link });
+      else if (model) await this.send(Request.LOAD, { name: model.name, bytes: model.bytes.slice(0) });
+    })().catch((e) => this.emit(Event.FATAL, { error: `could not restart the core after cancel: ${e.message}` }))
+      .finally(() => { this.restarted = null; });
+    return final;
   }
 
   on(type, callback) {
@@ -33,10 +75,16 @@ export class CoreBridge {
   }
 
   receive(data) {
+    if (data.type === Event.CHECKPOINT) {
+      this.kept.model = { name: data.name, bytes: data.bytes };
+      return;
+    }
+    if (data.type === Event.PROGRESS && this.runRequest) this.runRequest.lastProgress = data.progress;
     if (data.type !== 'reply') {
       this.emit(data.type, data);
       return;
     }
+    if (data.id === this.runRequest?.id) this.runRequest = null;
     const entry = this.pending.get(data.id);
     if (!entry) return;
     this.pending.delete(data.id);
@@ -44,21 +92,44 @@ export class CoreBridge {
     else entry.reject(new Error(data.error));
   }
 
-  request(type, fields = {}, transfer = []) {
+  /** Posts a request now (the worker queues it behind whatever it is doing). */
+  send(type, fields = {}, transfer = []) {
     const id = this.nextId++;
+    if (type === Request.RUN) this.runRequest = { id, lastProgress: null };
     return new Promise((resolve, reject) => {
       this.pending.set(id, { resolve, reject });
       this.worker.postMessage({ id, type, ...fields }, transfer);
     });
   }
 
-  /** @param {string} name @param {ArrayBuffer} bytes (transferred) */
-  load(name, bytes) { return this.request(Request.LOAD, { name, bytes }, [bytes]); }
-  openLink(link) { return this.request(Request.OPEN_LINK, { link }); }
+  /** A request, after the fresh worker of a cancelled single-threaded run is ready. */
+  async request(type, fields = {}, transfer = []) {
+    if (this.restarted) await this.restarted;
+    return this.send(type, fields, transfer);
+  }
+
+  /** @param {string} name @param {ArrayBuffer} bytes (transferred; a copy is kept for a restart) */
+  async load(name, bytes) {
+    const copy = this.info?.threaded === false ? bytes.slice(0) : null;
+    const result = await this.request(Request.LOAD, { name, bytes }, [bytes]);
+    if (copy) this.kept[result.kind === 'mesh' ? 'mesh' : 'model'] = { name, bytes: copy };
+    return result;
+  }
+
+  async openLink(link) {
+    const result = await this.request(Request.OPEN_LINK, { link });
+    this.kept.model = { link };
+    return result;
+  }
+
   estimate(resolution) { return this.request(Request.ESTIMATE, { resolution }); }
   autoResolution() { return this.request(Request.AUTO_RESOLUTION); }
   run(options) { return this.request(Request.RUN, { options }); }
-  cancel() { return this.request(Request.CANCEL); }
+  /** Threaded build: asks the run to stop. Single-threaded: ends the worker (restart above). */
+  cancel() {
+    if (this.info?.threaded === false && this.runRequest) return Promise.resolve(this.restart());
+    return this.request(Request.CANCEL);
+  }
   warmUp() { return this.request(Request.WARM_UP); }
   snapshot() { return this.request(Request.SNAPSHOT); }
   surface() { return this.request(Request.SURFACE); }

@@ -27,6 +27,7 @@ export const Event = Object.freeze({
   PROGRESS: 'progress',   // {progress: Progress}            several times a second during a run
   SNAPSHOT: 'snapshot',   // {snapshot: Snapshot}            whenever the model changed (≥ 2/s in a run)
   FATAL: 'fatal',         // {error}                         the worker cannot continue
+  CHECKPOINT: 'checkpoint', // {name, bytes}                 single-threaded run: the model as .zome.json, every second
 });
 
 /**

@@ -5,6 +5,8 @@ import { Request, Event } from '../protocol.js';
 
 const POLL_MS = 100;      // progress events
 const SNAPSHOT_MS = 250;  // model updates during a run (≥ 2 per second)
+const CHECKPOINT_MS = 1000; // single-threaded run: the model as a file for the page, in case it cancels
+const CHECKPOINT_NAME = 'checkpoint.zome.json';
 
 let core = null;
 let session = null;
@@ -76,14 +78,26 @@ function runThreaded(options) {
   });
 }
 
+// The model as a file the page keeps, so that a fresh worker can show it if the page ends this one
+// to cancel (bridge.js): this thread cannot receive Cancel while a run blocks it.
+function postCheckpoint() {
+  const out = session.exportModel(CHECKPOINT_NAME);
+  if (out.ok) post({ type: Event.CHECKPOINT, name: CHECKPOINT_NAME, bytes: out.bytes.buffer }, [out.bytes.buffer]);
+}
+
 function runBlocking(options) {
   running = true;
   let progress = null;
+  let lastCheckpoint = performance.now();
   try {
     parse(session.runBlocking(JSON.stringify(options), (json) => {
       progress = JSON.parse(json);
       post({ type: Event.PROGRESS, progress });
       maybePostSnapshot();
+      if (performance.now() - lastCheckpoint >= CHECKPOINT_MS) {
+        lastCheckpoint = performance.now();
+        postCheckpoint();
+      }
       return false; // this thread cannot receive Cancel while it runs
     }, SNAPSHOT_MS / 1000));
   } finally {
