@@ -1,14 +1,16 @@
-// Each download parses back: VEF and JSON through the native CLI, CSV, GLB and OBJ in JS.
+// Each download parses back: VEF and JSON through the native CLI, CSV, GLB and OBJ in JS. OBJ and
+// its MTL arrive as one .zip (one download, so the browser never asks to allow several).
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
 import { OUT } from './support/paths.js';
 import { partsOf } from './support/cli.js';
 import { openPage } from './support/page.js';
+import { readZipStored } from '../web/tests/helpers/read_zip.mjs';
 
 async function download(page, format) {
   const files = [];
-  const count = format === 'obj' ? 2 : 1;
+  const count = 1;
   const done = new Promise((resolve) => {
     page.on('download', async function onDownload(d) {
       const file = path.join(OUT, 'downloads', d.suggestedFilename());
@@ -52,9 +54,14 @@ test('VEF, GLB, OBJ, JSON and CSV downloads parse back', async ({ page }) => {
   const strutsTotal = Object.values(parts.struts).reduce((a, b) => a + b, 0);
   expect(gltf.nodes.length).toBeGreaterThanOrEqual(parts.balls + strutsTotal);
 
-  const files = await download(page, 'obj');
-  const obj = fs.readFileSync(files.find((f) => f.endsWith('.obj')), 'utf8');
-  const mtl = fs.readFileSync(files.find((f) => f.endsWith('.mtl')), 'utf8');
+  const [zip] = await download(page, 'obj');
+  expect(path.basename(zip)).toMatch(/\.zip$/);
+  const entries = readZipStored(new Uint8Array(fs.readFileSync(zip)));
+  expect(entries.map((e) => path.extname(e.name)).sort()).toEqual(['.mtl', '.obj']);
+  const text = (ext) => new TextDecoder().decode(entries.find((e) => e.name.endsWith(ext)).bytes);
+  const obj = text('.obj');
+  const mtl = text('.mtl');
+  expect(obj).toContain(`mtllib ${entries.find((e) => e.name.endsWith('.mtl')).name}`);
   expect(obj).toMatch(/^mtllib /m);
   const vertices = (obj.match(/^v /gm) || []).length;
   const faces = obj.match(/^f .*/gm) || [];

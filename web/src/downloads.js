@@ -1,9 +1,14 @@
-// Download buttons: each asks the worker for the export and saves it (OBJ comes with its MTL).
+// Download buttons: each asks the worker for the export and saves it. OBJ comes with its MTL, as
+// one .zip (two downloads make Chrome ask to allow multiple downloads).
 import { exportFileName } from './file_names.js';
+import { zipStored } from './zip.js';
 
 export const FORMATS = {
   vef: ['model.vef'], glb: ['model.glb'], obj: ['model.obj', 'model.mtl'], json: ['model.zome.json'], csv: ['parts.csv'],
 };
+
+// Formats of several files, saved as one zip of this name.
+export const ZIPPED = { obj: 'model.zip' };
 
 export function saveBytes(name, bytes) {
   const url = URL.createObjectURL(new Blob([bytes]));
@@ -22,11 +27,14 @@ export class Downloads {
     for (const button of root.querySelectorAll('[data-format]')) {
       button.addEventListener('click', async () => {
         try {
-          for (const file of FORMATS[button.dataset.format]) {
+          const format = button.dataset.format;
+          const files = [];
+          for (const file of FORMATS[format]) {
             const name = exportFileName(file, this.baseName());
-            const { bytes } = await bridge.exportModel(name);
-            saveBytes(name, bytes);
+            files.push({ name, bytes: (await bridge.exportModel(name)).bytes });
           }
+          if (ZIPPED[format]) saveBytes(exportFileName(ZIPPED[format], this.baseName()), zipStored(files));
+          else for (const f of files) saveBytes(f.name, f.bytes);
         } catch (e) {
           status.error(e.message);
         }
