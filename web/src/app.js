@@ -23,9 +23,46 @@ export function qualityText(summary) {
   return lines.join(' ');
 }
 
+function holes(n) {
+  return n === 0 ? 'no hole' : n === 1 ? '1 hole' : `${n} holes`;
+}
+
+/**
+ * The line under "Parts", in plain words: the counts, and whether the model is a closed Zome
+ * surface with as many holes through it as the shape (`surfaceGenus`; null when the model is not
+ * the loaded shape's, e.g. a file or a link).
+ */
+export function resultText(s, surfaceGenus = null) {
+  const kinds = Object.entries(s.by_kind || {}).map(([k, n]) => `${k} ${n}`).join(', ');
+  const counts = `${s.balls} balls, ${s.struts} struts (${kinds})`;
+  if (s.valid === null || s.valid === undefined) return counts;
+  if (!s.valid) return `${counts} · Not a closed Zome surface${s.validation ? `: ${s.validation}` : ''}`;
+  if (surfaceGenus !== null && s.genus !== surfaceGenus) {
+    return `${counts} · Warning: the shape has ${holes(surfaceGenus)} through it, this model has ${holes(s.genus)}` +
+      ' (try the resolution the controls suggest).';
+  }
+  return `${counts} · a closed surface${surfaceGenus === null ? '' : ' with the shape\'s holes'}`;
+}
+
+/** A builder's one-line verdict at the end of a run: "581 balls, largest gap 96 mm, buildable". */
+export function verdictText(s, surfaceGenus = null) {
+  const parts = [`${s.balls} balls`];
+  const gap = s.stats?.fidelity?.hausdorff_mm;
+  if (Number.isFinite(gap)) parts.push(`largest gap ${Math.round(gap)} mm`);
+  parts.push(s.clashes > 0 ? 'cannot be built as it is (parts clash)' : 'buildable');
+  if (s.valid && surfaceGenus !== null && s.genus !== surfaceGenus) {
+    parts.push(`but it has ${holes(s.genus)} through it where the shape has ${holes(surfaceGenus)}`);
+  }
+  return parts.join(', ');
+}
+
 export class App {
-  constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl }) {
-    Object.assign(this, { bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl });
+  constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl, surfaceToggleEl }) {
+    Object.assign(this, { bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl,
+      surfaceToggleEl });
+    this.surfaceGenus = null; // of the loaded mesh
+    this.modelOfSurface = false; // the model on screen was made from the loaded mesh
+    this.queued = null; // a file dropped during a run, loaded when it ends
     this.running = false;
     this.runCount = 0; // finished runs (scripts and tests wait on it)
     this.currentName = 'model';
@@ -48,10 +85,12 @@ export class App {
   }
 
   /** Loads mesh or model bytes; returns {ok, kind?, error?}. `run` starts a run after a mesh. */
-  async loadBytes(name, bytes, { run = false, fit = true, chooseResolution = true } = {}) {
+  async loadBytes(name, bytes, { run = false, fit = true, chooseResolution = true, fresh = true } = {}) {
     if (this.running) {
-      this.fail(`${name}: a run is in progress; cancel it first`);
-      return { ok: false, error: this.lastError };
+      // Not lost: it loads (and runs, if asked) when this run ends, or at once after Cancel.
+      this.queued = { name, bytes, options: { run, fit, chooseResolution, fresh } };
+      this.status.note(`${name} will load when this run ends (Cancel to load it now).`);
+      return { ok: true, queued: true };
     }
     let result;
     const fitBefore = this.fitNext;
@@ -68,18 +107,33 @@ export class App {
     if (result.kind === 'mesh') {
       this.fitNext = fit; // the first model of a new shape is framed
       const r = result.report;
+      this.surfaceGenus = r.genus;
       this.viewer.setSurface(await this.bridge.surface());
+      if (fresh) this.showNewShape();
       this.surfaceEl.textContent = `${name}: ${r.vertices} vertices, ${r.faces} triangles, genus ${r.genus}` +
         (r.repaired?.length ? ` (repaired: ${r.repaired.join('; ')})` : '');
       this.status.note(`${name} loaded.`);
       if (chooseResolution) await this.chooseResolution();
       else this.controls.scheduleEstimate();
-      if (run) return { ...result, run: await this.run() };
+      // A run started meanwhile (Run pressed while the mesh loaded) takes the place of this one.
+      if (run && !this.running) return { ...result, run: await this.run() };
     } else {
+      this.modelOfSurface = false;
       this.status.note(`${name}: model loaded.`);
       await this.refreshResults();
     }
     return result;
+  }
+
+  /** A new mesh: drawn at once; the old model's results are cleared and the model marked as old. */
+  showNewShape() {
+    this.viewer.setSurfaceVisible?.(true);
+    if (this.surfaceToggleEl) this.surfaceToggleEl.checked = true;
+    this.modelOfSurface = false;
+    this.parts.clear();
+    this.plot.reset();
+    this.summaryEl.textContent = 'The model on screen was made before this shape was loaded: press Run for this one.';
+    if (this.qualityEl) this.qualityEl.textContent = '';
   }
 
   async loadFile(file, options) {
@@ -113,7 +167,8 @@ export class App {
     const { sample } = fetched;
     const [mesh, model] = await Promise.all([fetched.mesh, fetched.model]);
     if (model) await this.loadBytes(sample.id + '.zome.json', model, { fit });
-    await this.loadBytes(sample.mesh, mesh, { fit: !model, chooseResolution: false });
+    await this.loadBytes(sample.mesh, mesh, { fit: !model, chooseResolution: false, fresh: !model });
+    this.modelOfSurface = Boolean(model);
     this.controls.set({ resolution: sample.resolution });
     this.status.note(`Sample: ${sample.label} (${sample.credit}). Drop your own mesh anywhere, or press Run.`);
     if (!model) await this.run();
@@ -140,6 +195,7 @@ export class App {
     }
     this.lastError = null;
     this.currentName = 'shared-model';
+    this.modelOfSurface = false;
     this.status.note('Model from the share link (not recomputed).');
     await this.refreshResults();
     return { ok: true };
@@ -152,6 +208,9 @@ export class App {
     this.running = true;
     this.controls.setRunning(true);
     this.plot.reset();
+    this.parts.clear(); // the list follows the new model when the run ends
+    this.summaryEl.textContent = 'Running: the parts list follows when the run ends.';
+    if (this.qualityEl) this.qualityEl.textContent = '';
     this.status.note('Running…');
     let final;
     try {
@@ -164,32 +223,43 @@ export class App {
       this.controls.setRunning(false);
     }
     this.lastProgress = final;
+    if (final.state !== 'failed') this.modelOfSurface = true;
+    const s = await this.refreshResults();
     if (final.state === 'failed') this.fail(`run: ${final.error}`);
     else {
       this.lastError = null;
       const how = final.state === 'cancelled' ? 'Cancelled; kept the best model' : 'Finished';
-      this.status.note(`${how} in ${final.seconds.toFixed(1)} s. ${final.note || ''}`.trim());
+      const verdict = s ? ` ${verdictText(s, this.surfaceGenus)}.` : '';
+      this.status.note(`${how} in ${final.seconds.toFixed(1)} s.${verdict} ${final.note || ''}`.trim());
     }
-    await this.refreshResults();
+    this.loadQueued();
     return final;
+  }
+
+  /** The file dropped during the run, now that it has ended. */
+  loadQueued() {
+    const q = this.queued;
+    this.queued = null;
+    if (q) this.afterQueued = this.loadBytes(q.name, q.bytes, q.options);
   }
 
   async cancel() {
     if (this.running) await this.bridge.cancel();
   }
 
+  /** The parts list, the result line and the quality line of the model on screen; its summary. */
   async refreshResults() {
     try {
       this.parts.show(await this.bridge.parts());
       const s = await this.bridge.summary();
-      const kinds = Object.entries(s.by_kind).map(([k, n]) => `${k} ${n}`).join(', ');
-      const valid = s.valid === null ? '' : s.valid ? ` · valid, genus ${s.genus}` : ' · NOT valid';
-      this.summaryEl.textContent = `${s.balls} balls, ${s.struts} struts (${kinds})${valid}`;
+      this.summaryEl.textContent = resultText(s, this.modelOfSurface ? this.surfaceGenus : null);
       if (this.qualityEl) this.qualityEl.textContent = qualityText(s);
+      return s;
     } catch (e) {
       this.parts.clear();
       this.summaryEl.textContent = '';
       if (this.qualityEl) this.qualityEl.textContent = '';
+      return null;
     }
   }
 

@@ -23,7 +23,7 @@ const plot = new RunPlot(document);
 let app = null;
 const parts = new PartsTable(document, { onHover: (kinds) => viewer.highlightKinds(kinds) });
 app = new App({ bridge, viewer, controls, plot, parts, status, summaryEl: $('summary'), surfaceEl: $('surface-info'),
-  qualityEl: $('quality') });
+  qualityEl: $('quality'), surfaceToggleEl: $('show-surface') });
 new Downloads(document, { bridge, status, baseName: () => app.currentName });
 
 let resolveReady, rejectReady;

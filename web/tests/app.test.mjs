@@ -3,7 +3,7 @@
 // successes update the name, the summary and the parts.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { App, qualityText } from '../src/app.js';
+import { App, qualityText, resultText, verdictText } from '../src/app.js';
 import { Event } from '../src/protocol.js';
 import { Status } from '../src/status.js';
 import { FakeElement, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
@@ -49,7 +49,7 @@ test('a model file: its snapshot is framed, later ones are not; name, summary an
   assert.deepEqual(t.viewer.models, [{ fit: true }, { fit: false }]);
   assert.equal(t.app.currentName, 'torus');
   assert.equal(t.statusEl.textContent, 'torus.zome.json: model loaded.');
-  assert.equal(t.summaryEl.textContent, '5 balls, 4 struts (B0 2, Y0 1, R0 1) · valid, genus 0');
+  assert.equal(t.summaryEl.textContent, '5 balls, 4 struts (B0 2, Y0 1, R0 1) · a closed surface');
   assert.equal(t.parts.shown, 1);
 });
 
@@ -103,12 +103,42 @@ test('a refused file does not leave the next model\'s framing switched on', asyn
   assert.deepEqual(t.viewer.models.at(-1), { fit: false });
 });
 
-test('while a run is going a new file is refused before it reaches the core', async () => {
+test('a file dropped during a run is not lost: it waits, is announced, and loads when the run ends', async () => {
+  let finish;
+  const t = makeApp({ run: () => new Promise((resolve) => { finish = resolve; }) });
+  const running = t.app.run();
+  const result = await t.app.loadBytes('next.obj', new ArrayBuffer(1), { run: false });
+  assert.deepEqual(result, { ok: true, queued: true });
+  assert.deepEqual(t.bridge.calls, []); // not sent to the core while it runs
+  assert.equal(t.statusEl.textContent, 'next.obj will load when this run ends (Cancel to load it now).');
+  finish({ state: 'done', seconds: 1, note: '' });
+  await running;
+  await t.app.afterQueued;
+  assert.deepEqual(t.bridge.calls, [['load', 'next.obj']]);
+  assert.equal(t.statusEl.textContent, 'next.obj loaded.');
+});
+
+test('result line and verdict in plain words: a lost hole is flagged, clashes are named', () => {
+  const s = { balls: 256, struts: 600, by_kind: { B0: 600 }, valid: true, genus: 0, clashes: 0,
+    stats: { fidelity: { hausdorff_mm: 31.4 } } };
+  assert.equal(resultText(s, 1), '256 balls, 600 struts (B0 600) · Warning: the shape has 1 hole through it, ' +
+    'this model has no hole (try the resolution the controls suggest).');
+  assert.equal(resultText({ ...s, genus: 1 }, 1), "256 balls, 600 struts (B0 600) · a closed surface with the shape's holes");
+  assert.equal(resultText(s, null), '256 balls, 600 struts (B0 600) · a closed surface');
+  assert.equal(resultText({ ...s, valid: false, validation: 'open at 2 edges' }),
+    '256 balls, 600 struts (B0 600) · Not a closed Zome surface: open at 2 edges');
+  assert.equal(verdictText({ ...s, genus: 1 }, 1), '256 balls, largest gap 31 mm, buildable');
+  assert.equal(verdictText(s, 1), '256 balls, largest gap 31 mm, buildable, but it has no hole through it where the shape has 1 hole');
+  assert.equal(verdictText({ ...s, clashes: 2, stats: {} }, null), '256 balls, cannot be built as it is (parts clash)');
+});
+
+test('a new mesh is drawn at once and the old model\'s results are cleared', async () => {
   const t = makeApp();
-  t.app.running = true;
-  const result = await t.app.loadBytes('next.obj', new ArrayBuffer(1));
-  assert.equal(result.error, 'next.obj: a run is in progress; cancel it first');
-  assert.deepEqual(t.bridge.calls, []);
+  t.summaryEl.textContent = 'old model';
+  await t.app.loadBytes('ring.obj', new ArrayBuffer(1));
+  assert.equal(t.parts.cleared, 1);
+  assert.equal(t.plot.resets, 1);
+  assert.match(t.summaryEl.textContent, /made before this shape was loaded/);
 });
 
 test('a bad share link: "share link: …", the model stays; a good one is named shared-model', async () => {
@@ -130,12 +160,12 @@ test('a run gets the controls\' options; the end is reported with time and note'
   assert.deepEqual(t.controls.sets, [{ seed: 3 }]);
   assert.deepEqual(t.bridge.calls, [['run', { seconds: 5, seed: 3 }]]);
   assert.equal(final.state, 'done');
-  assert.equal(t.statusEl.textContent, 'Finished in 1.5 s. target reached');
+  assert.equal(t.statusEl.textContent, 'Finished in 1.5 s. 5 balls, buildable. target reached');
   assert.deepEqual(t.controls.running, [true, false]);
   assert.equal(t.app.runCount, 1);
   t.bridge.run = async () => ({ state: 'cancelled', seconds: 2, note: '' });
   await t.app.run();
-  assert.equal(t.statusEl.textContent, 'Cancelled; kept the best model in 2.0 s.');
+  assert.equal(t.statusEl.textContent, 'Cancelled; kept the best model in 2.0 s. 5 balls, buildable.');
 });
 
 test('a failed run: "run: …", the page is idle again and the kept model\'s results refreshed', async () => {
@@ -158,7 +188,7 @@ test('results that cannot be read clear the panel instead of throwing; an invali
   t.bridge.parts = async () => ({});
   t.bridge.summary = async () => ({ balls: 3, struts: 3, by_kind: { B0: 3 }, valid: false });
   await t.app.refreshResults();
-  assert.equal(t.summaryEl.textContent, '3 balls, 3 struts (B0 3) · NOT valid');
+  assert.equal(t.summaryEl.textContent, '3 balls, 3 struts (B0 3) · Not a closed Zome surface');
 });
 
 test('loadUrl: an unreachable URL is one status line; an odd %-escape in its name does not throw', async () => {
