@@ -110,7 +110,8 @@ export class App {
       this.surfaceGenus = r.genus;
       this.viewer.setSurface(await this.bridge.surface());
       if (fresh) this.showNewShape();
-      this.surfaceEl.textContent = `${name}: ${r.vertices} vertices, ${r.faces} triangles, genus ${r.genus}` +
+      this.surfaceEl.textContent = `${name}: ${r.vertices} vertices, ${r.faces} triangles, ` +
+        `${holes(r.genus)} through it` +
         (r.repaired?.length ? ` (repaired: ${r.repaired.join('; ')})` : '');
       this.status.note(`${name} loaded.`);
       if (chooseResolution) await this.chooseResolution();

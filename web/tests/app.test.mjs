@@ -70,7 +70,7 @@ test('a mesh: its surface and diagnosis are shown and the estimate refreshed', a
   const t = makeApp();
   t.bridge.load = async () => ({ kind: 'mesh', report: { vertices: 8, faces: 12, genus: 1, repaired: ['merged 2 vertices'] } });
   await t.app.loadBytes('ring.OBJ', new ArrayBuffer(1));
-  assert.equal(t.surfaceEl.textContent, 'ring.OBJ: 8 vertices, 12 triangles, genus 1 (repaired: merged 2 vertices)');
+  assert.equal(t.surfaceEl.textContent, 'ring.OBJ: 8 vertices, 12 triangles, 1 hole through it (repaired: merged 2 vertices)');
   assert.equal(t.viewer.surfaces.length, 1);
   assert.equal(t.controls.estimates, 1);
   assert.equal(t.app.currentName, 'ring');
