@@ -63,7 +63,7 @@ const std::vector<OptionBounds>& run_option_bounds()
 {
     static const std::vector<OptionBounds> bounds = {
         {"resolution", "--resolution", kAutoResolution, kMaxResolution, true},
-        {"seconds", "--seconds", 0.1, 7 * 24 * 3600.0, false},
+        {"seconds", "--seconds", 0, 7 * 24 * 3600.0, false},
         {"proposals", "--proposals", 0, 1e12, true},
         {"target_nodes", "--target-nodes", 0, 10'000'000, true},
         {"threads", "--threads", 0, 64, true},
@@ -97,6 +97,9 @@ void RunSettings::check() const
         throw InvalidInputError("option 'resolution' (--resolution) must be automatic (0) or from " +
                                 std::to_string(kMinResolution) + " to " + std::to_string(kMaxResolution) +
                                 ", got " + std::to_string(resolution));
+    // A proposal budget replaces the time budget; without one the run needs some time.
+    if (proposals == 0 && !(seconds > 0.0))
+        throw InvalidInputError("option 'seconds' (--seconds) must be positive unless a proposal budget is given");
     if (target_nodes != 0 && target_nodes < 4)
         throw InvalidInputError("option 'target_nodes' (--target-nodes) must be 0 (Z0's count) or at least 4, got " +
                                 std::to_string(target_nodes));

@@ -59,6 +59,8 @@ TEST(RunSettings, EveryBoundIsEnforcedWithTheOptionsName)
                 j["weights"][key.substr(8)] = x;
             else
                 j[key] = x;
+            if (key == "seconds")
+                j["proposals"] = 1; // a time budget of 0 needs a proposal budget
             return j.dump();
         };
         EXPECT_EQ(error_of(json(b.min)), "");
@@ -74,6 +76,8 @@ TEST(RunSettings, EveryBoundIsEnforcedWithTheOptionsName)
     }
     EXPECT_NE(error_of(R"({"resolution": 1})").find("automatic"), std::string::npos);
     EXPECT_NE(error_of(R"({"target_nodes": 2})"), "");
+    EXPECT_NE(error_of(R"({"seconds": 0})").find("unless a proposal budget"), std::string::npos);
+    EXPECT_EQ(error_of(R"({"seconds": 0, "proposals": 40000})"), ""); // the page's warm-up run
     EXPECT_NE(error_of(R"({"seconds": "5"})"), "");
     EXPECT_NE(error_of(R"({"initial_only": 1})"), "");
     EXPECT_NE(error_of(R"([1])"), "");
