@@ -49,7 +49,7 @@ test('the form starts from the core\'s run settings: defaults, bounds, presets',
 test('each shared mesh dropped as is keeps its genus and ends with a valid model', async ({ page }) => {
   test.setTimeout(15 * 60_000);
   const { errors } = await openPage(page);
-  await page.evaluate((seconds) => window.zomeify.setOptions({ seconds, threads: 1 }), SECONDS);
+  await page.evaluate((seconds) => window.zomeify.setOptions({ seconds }), SECONDS);
   const rows = [];
   for (const file of MESH_FILES) {
     const runsBefore = await page.evaluate(() => window.zomeify.runs());
