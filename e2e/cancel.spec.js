@@ -1,6 +1,6 @@
 // Cancel returns to idle within 0.5 s and keeps a valid model; a second run works.
 import { test, expect } from '@playwright/test';
-import { openPage, summary, waitRunning, waitIdle } from './support/page.js';
+import { openPage, summary, waitRunning, waitIdle, clickCancelTimed } from './support/page.js';
 
 test('cancel within 0.5 s keeps a valid model, then a second run', async ({ page }) => {
   await openPage(page);
@@ -8,14 +8,7 @@ test('cancel within 0.5 s keeps a valid model, then a second run', async ({ page
   await waitRunning(page);
   await page.waitForFunction(() => window.zomeify.progress()?.state === 'annealing', null, { timeout: 30_000 });
   await page.waitForTimeout(1000);
-  const ms = await page.evaluate(async () => {
-    const t0 = performance.now();
-    document.getElementById('cancel').click();
-    while (window.zomeify.state() !== 'idle') await new Promise((resolve) => setTimeout(resolve, 5));
-    const idle = performance.now() - t0;
-    await window.__run;
-    return idle;
-  });
+  const ms = await clickCancelTimed(page);
   console.log(`cancel: idle ${ms.toFixed(0)} ms after the click`);
   expect(await page.evaluate(() => window.zomeify.state())).toBe('idle');
   expect(await page.evaluate(() => window.zomeify.progress().state)).toBe('cancelled');

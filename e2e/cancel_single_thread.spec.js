@@ -3,7 +3,7 @@
 // (web/src/bridge.js). Idle within 0.5 s, a valid model kept, a second run works.
 import { test, expect } from '@playwright/test';
 import { PORT_NO_COI } from './playwright.config.js';
-import { openPage, summary, waitRunning, waitIdle, expectNoPageErrors } from './support/page.js';
+import { openPage, summary, waitRunning, waitIdle, clickCancelTimed, expectNoPageErrors } from './support/page.js';
 
 test('single-threaded: cancel within 0.5 s keeps a valid model, then a second run', async ({ page }) => {
   const { info, errors } = await openPage(page, `http://127.0.0.1:${PORT_NO_COI}/`);
@@ -13,14 +13,7 @@ test('single-threaded: cancel within 0.5 s keeps a valid model, then a second ru
   await page.waitForFunction(() => window.zomeify.progress()?.state === 'annealing', null, { timeout: 30_000 });
   await page.waitForTimeout(2500); // past the first checkpoints
   const ballsShown = await page.evaluate(() => window.zomeify.progress().nodes);
-  const ms = await page.evaluate(async () => {
-    const t0 = performance.now();
-    document.getElementById('cancel').click();
-    while (window.zomeify.state() !== 'idle') await new Promise((resolve) => setTimeout(resolve, 5));
-    const idle = performance.now() - t0;
-    await window.__run;
-    return idle;
-  });
+  const ms = await clickCancelTimed(page);
   console.log(`single-threaded cancel: idle ${ms.toFixed(0)} ms after the click`);
   expect(ms, `cancel took ${ms.toFixed(0)} ms`).toBeLessThan(500);
   const final = await page.evaluate(() => window.zomeify.progress());

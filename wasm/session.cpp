@@ -192,37 +192,54 @@ std::string Session::open_link(const std::string &link)
         });
 }
 
+namespace
+{
+
+// Z0 of the loaded surface at `resolution`, and what the page shows of it: counts, genus against
+// the surface's, and the finished model's size and kits.
+std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface &s, int resolution)
+{
+    InitialModel z0 = build_initial_model(s.mesh, s.is_inside(), z0_options(resolution, s.report.genus));
+    nlohmann::json out;
+    out["ok"] = true;
+    out["resolution"] = resolution;
+    out["nodes"] = z0.model.nodes.size();
+    out["struts"] = z0.model.struts.size();
+    out["valid"] = z0.report.valid;
+    out["genus"] = z0.report.topology.genus;
+    out["surface_genus"] = s.report.genus;
+    out["kept"] = z0.report.valid && z0.report.topology.genus == s.report.genus;
+    out["seconds"] = z0.report.seconds;
+    out.update(size_estimate(z0, z0.model.nodes.size()));
+    return {std::move(z0), std::move(out)};
+}
+
+} // namespace
+
+const LoadedSurface &Session::idle_surface() const
+{
+    if (!surface_)
+        throw InvalidInputError("no mesh loaded");
+    if (busy())
+        throw InvalidInputError("a run is in progress");
+    return *surface_;
+}
+
 std::string Session::estimate(int resolution)
 {
     return guarded(
         [&]
         {
-            if (!surface_)
-                throw InvalidInputError("no mesh loaded");
-            if (busy())
-                throw InvalidInputError("a run is in progress");
+            const LoadedSurface &s = idle_surface();
             if (resolution < kMinResolution || resolution > kMaxResolution)
                 throw InvalidInputError("resolution must be between " + std::to_string(kMinResolution) + " and " +
                                         std::to_string(kMaxResolution) + " cells");
-            const InitialModel z0 = build_initial_model(surface_->mesh, surface_->is_inside(),
-                                                        z0_options(resolution, surface_->report.genus));
-            nlohmann::json out;
-            out["ok"] = true;
-            out["resolution"] = resolution;
-            out["nodes"] = z0.model.nodes.size();
-            out["struts"] = z0.model.struts.size();
-            out["valid"] = z0.report.valid;
-            out["genus"] = z0.report.topology.genus;
-            out["surface_genus"] = surface_->report.genus;
-            out["kept"] = z0.report.valid && z0.report.topology.genus == surface_->report.genus;
-            const GenusAdvice advice =
-                z0.report.valid ? genus_advice(surface_->mesh, surface_->report.genus, surface_->is_inside(), resolution,
-                                               z0.report.topology.genus, 3.0)
-                                : GenusAdvice{};
+            auto [z0, out] = z0_estimate(s, resolution);
+            const GenusAdvice advice = z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution,
+                                                                      z0.report.topology.genus, 3.0)
+                                                       : GenusAdvice{};
             out["advice"] = advice.message;
             out["advice_resolution"] = advice.resolution;
-            out["seconds"] = z0.report.seconds;
-            out.update(size_estimate(z0, z0.model.nodes.size()));
             return out.dump();
         });
 }
@@ -232,29 +249,15 @@ std::string Session::auto_resolution()
     return guarded(
         [&]
         {
-            if (!surface_)
-                throw InvalidInputError("no mesh loaded");
-            if (busy())
-                throw InvalidInputError("a run is in progress");
+            const LoadedSurface &s = idle_surface();
             AutoResolutionOptions options;
             options.seconds = 3.0;
-            const AutoResolution a =
-                choose_resolution(surface_->mesh, surface_->report.genus, surface_->is_inside(), options);
-            const InitialModel z0 = build_initial_model(surface_->mesh, surface_->is_inside(),
-                                                        z0_options(a.resolution, surface_->report.genus));
-            nlohmann::json out;
-            out["ok"] = true;
-            out["resolution"] = a.resolution;
-            out["nodes"] = z0.model.nodes.size();
-            out["struts"] = z0.model.struts.size();
-            out["valid"] = z0.report.valid;
-            out["genus"] = z0.report.topology.genus;
-            out["surface_genus"] = surface_->report.genus;
+            const AutoResolution a = choose_resolution(s.mesh, s.report.genus, s.is_inside(), options);
+            nlohmann::json out = z0_estimate(s, a.resolution).second;
             out["kept"] = a.genus_kept;
             out["searched_to"] = a.searched_to;
             out["message"] = a.message;
             out["seconds"] = a.seconds;
-            out.update(size_estimate(z0, z0.model.nodes.size()));
             return out.dump();
         });
 }

@@ -79,6 +79,8 @@ private:
     void execute_run(const RunOptions &options, RunControl &control);
     void set_model(ZomeModel model, std::string source);
     bool busy() const;
+    //! The loaded surface; InvalidInputError when there is none or a run is going.
+    const LoadedSurface &idle_surface() const;
 
     std::unique_ptr<LoadedSurface> surface_;
     std::string surface_name_;

@@ -41,3 +41,15 @@ export async function waitRunning(page, timeout = 20_000) {
 export async function expectNoPageErrors(errors) {
   expect(errors, 'uncaught errors on the page').toEqual([]);
 }
+
+/** Clicks Cancel during the run started as window.__run; ms until the page is idle again. */
+export async function clickCancelTimed(page) {
+  return page.evaluate(async () => {
+    const t0 = performance.now();
+    document.getElementById('cancel').click();
+    while (window.zomeify.state() !== 'idle') await new Promise((resolve) => setTimeout(resolve, 5));
+    const idle = performance.now() - t0;
+    await window.__run;
+    return idle;
+  });
+}
