@@ -224,7 +224,7 @@ export class App {
       this.controls.setRunning(false);
     }
     this.lastProgress = final;
-    if (final.state !== 'failed') this.modelOfSurface = true;
+    if (final.state !== 'failed' && final.nodes > 0) this.modelOfSurface = true; // else the old model stays
     const s = await this.refreshResults();
     if (final.state === 'failed') this.fail(`run: ${final.error}`);
     else {
@@ -245,7 +245,9 @@ export class App {
   }
 
   async cancel() {
-    if (this.running) await this.bridge.cancel();
+    if (!this.running) return;
+    this.plot.hold();
+    await this.bridge.cancel();
   }
 
   /** The parts list, the result line and the quality line of the model on screen; its summary. */

@@ -18,7 +18,7 @@ export class CoreBridge {
     this.wasmBase = null;
     this.restarted = null; // a promise while a fresh worker is being set up
     this.kept = { mesh: null, model: null }; // what a fresh worker must load: {name, bytes} or {link}
-    this.runRequest = null; // {id, lastProgress} of the run in progress
+    this.runRequest = null; // {id, lastProgress, checkpointed} of the run in progress
   }
 
   /** Starts the worker and loads the threaded build when the page is cross-origin isolated. */
@@ -46,12 +46,12 @@ export class CoreBridge {
     this.worker.terminate();
     const abandoned = [...this.pending.entries()];
     this.pending.clear();
-    const final = { ...(run?.lastProgress || { seconds: 0, nodes: 0, struts: 0 }), state: 'cancelled',
-      note: 'The run was stopped; the model as it was at the last checkpoint (within a second) is kept.' };
+    const final = this.cancelledProgress(run);
     for (const [id, entry] of abandoned) {
       if (id === run?.id) entry.resolve(final);
       else entry.reject(new Error('cancelled'));
     }
+    this.emit(Event.PROGRESS, { progress: final }); // the bar and the line say "cancelled", as in threads
     this.spawn();
     const { mesh, model } = this.kept;
     this.restarted = (async () => {
@@ -62,6 +62,18 @@ export class CoreBridge {
     })().catch((e) => this.emit(Event.FATAL, { error: `could not restart the core after cancel: ${e.message}` }))
       .finally(() => { this.restarted = null; });
     return final;
+  }
+
+  /** The final progress of a run ended with its worker: how far it got, and which model is kept. */
+  cancelledProgress(run) {
+    const last = run?.lastProgress || { seconds: 0, fraction: 0 };
+    if (!run?.checkpointed) {
+      // Stopped before its first model: the one from before the run stays (nodes 0: none made).
+      return { ...last, state: 'cancelled', nodes: 0, struts: 0,
+        note: 'The run was stopped before it made a model; the model from before it is kept.' };
+    }
+    return { ...last, state: 'cancelled',
+      note: 'The run was stopped; the model as it was at the last checkpoint (within a second) is kept.' };
   }
 
   on(type, callback) {
@@ -77,6 +89,7 @@ export class CoreBridge {
   receive(data) {
     if (data.type === Event.CHECKPOINT) {
       this.kept.model = { name: data.name, bytes: data.bytes };
+      if (this.runRequest) this.runRequest.checkpointed = true;
       return;
     }
     if (data.type === Event.PROGRESS && this.runRequest) this.runRequest.lastProgress = data.progress;
@@ -95,7 +108,7 @@ export class CoreBridge {
   /** Posts a request now (the worker queues it behind whatever it is doing). */
   send(type, fields = {}, transfer = []) {
     const id = this.nextId++;
-    if (type === Request.RUN) this.runRequest = { id, lastProgress: null };
+    if (type === Request.RUN) this.runRequest = { id, lastProgress: null, checkpointed: false };
     return new Promise((resolve, reject) => {
       this.pending.set(id, { resolve, reject });
       this.worker.postMessage({ id, type, ...fields }, transfer);

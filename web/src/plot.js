@@ -37,6 +37,7 @@ export class RunPlot {
     this.plotBox = root.querySelector('#energy-plot');
     this.times = [];
     this.energies = [];
+    this.held = false; // Cancel was pressed: the bar stays where the run got to
     this.plot = new uPlot({
       width: 300, height: 140, legend: { show: false }, cursor: { show: false },
       scales: { x: { time: false } },
@@ -54,15 +55,24 @@ export class RunPlot {
     this.energies = [];
     this.plot.setData([[], []]);
     this.bar.value = 0;
+    this.held = false;
     this.text.textContent = '';
     if (this.tech) this.tech.textContent = '';
+  }
+
+  /**
+   * Cancel pressed: later reports no longer move the bar (the annealer's last report of a stopped
+   * run says fraction 1, which would show a cancelled run as complete).
+   */
+  hold() {
+    this.held = true;
   }
 
   /** @param {import('./protocol.js').Progress} p */
   update(p) {
     const annealing = p.state === 'annealing';
     this.bar.max = 1;
-    this.bar.value = p.state === 'done' ? 1 : Math.min(1, p.fraction || 0);
+    if (!this.held) this.bar.value = p.state === 'done' ? 1 : Math.min(1, p.fraction || 0);
     this.text.textContent = progressText(p);
     if (this.tech) this.tech.textContent = technicalText(p);
     if (annealing && Number.isFinite(p.energy) && p.energy > 0) {

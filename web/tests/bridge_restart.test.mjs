@@ -51,3 +51,30 @@ test('single-threaded cancel: the run resolves cancelled at once; a fresh worker
     restore.forEach((r) => r());
   }
 });
+
+test('single-threaded cancel before the run\'s first model: the model from before is kept, and the bar says so', async () => {
+  const restore = [setGlobal('Worker', FakeWorker), setGlobal('document', { baseURI: 'http://x/' }),
+    setGlobal('self', { crossOriginIsolated: false })];
+  try {
+    const bridge = new CoreBridge();
+    const events = [];
+    bridge.on(Event.PROGRESS, ({ progress }) => events.push(progress));
+    await bridge.start();
+    await bridge.load('before.zome.json', new Uint8Array([5]).buffer);
+    await bridge.load('shape.obj', new Uint8Array([1]).buffer);
+    const run = bridge.run({ seconds: 60 });
+    const first = FakeWorker.made.at(-1);
+    first.onmessage({ data: { type: Event.PROGRESS, progress: { state: 'initial', seconds: 0.4, fraction: 0, nodes: 0 } } });
+    const final = await bridge.cancel();
+    assert.equal(final.state, 'cancelled');
+    assert.equal(final.nodes, 0); // no model of this run: the page keeps treating the old one as old
+    assert.match(final.note, /before it made a model/);
+    assert.deepEqual(events.at(-1), final); // the bar and the progress line hear the end too
+    assert.deepEqual(await run, final);
+    await bridge.summary();
+    const fresh = FakeWorker.made.at(-1);
+    assert.deepEqual(fresh.sent.map((m) => m.name).filter(Boolean), ['shape.obj', 'before.zome.json']);
+  } finally {
+    restore.forEach((r) => r());
+  }
+});

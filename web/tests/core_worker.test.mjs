@@ -110,6 +110,11 @@ test('single-threaded run: options reach the core unchanged; progress and a chan
   assert.equal(final.state, 'done');
   assert.deepEqual(progress.map((p) => p.state), ['annealing', 'annealing']);
   assert.equal(snapshots.length, before + 1); // one new model version, sent once
+  // The run's first model goes to the page at once as a checkpoint (not a second later), so a
+  // Cancel right after it keeps this run's model; the finished model was that same version.
+  const checkpoints = posted.filter((p) => p.msg.type === Event.CHECKPOINT);
+  assert.equal(checkpoints.length, 1);
+  assert.equal(bridge.kept.model.name, 'checkpoint.zome.json');
 });
 
 test('threaded run: a second run is refused, cancel stops the first with state "cancelled"', async () => {

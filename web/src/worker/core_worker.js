@@ -80,30 +80,48 @@ function runThreaded(options) {
 
 // The model as a file the page keeps, so that a fresh worker can show it if the page ends this one
 // to cancel (bridge.js): this thread cannot receive Cancel while a run blocks it.
+let checkpointVersion = -1;
 function postCheckpoint() {
+  checkpointVersion = session.modelVersion();
   const out = session.exportModel(CHECKPOINT_NAME);
   if (out.ok) post({ type: Event.CHECKPOINT, name: CHECKPOINT_NAME, bytes: out.bytes.buffer }, [out.bytes.buffer]);
+}
+
+/**
+ * A checkpoint of the run's first model at once (a Cancel before the first second must not bring
+ * back the model from before the run), then at most one a second.
+ */
+function checkpointer(startVersion) {
+  let last = -Infinity; // when this run last sent one
+  return () => {
+    const version = session.modelVersion();
+    if (version === startVersion || version === checkpointVersion) return; // nothing new
+    if (performance.now() - last < CHECKPOINT_MS) return;
+    last = performance.now();
+    postCheckpoint();
+  };
 }
 
 function runBlocking(options) {
   running = true;
   let progress = null;
-  let lastCheckpoint = performance.now();
+  const startVersion = session.modelVersion();
+  checkpointVersion = startVersion; // the page has this model already
+  const checkpoint = checkpointer(startVersion);
   try {
     parse(session.runBlocking(JSON.stringify(options), (json) => {
       progress = JSON.parse(json);
       post({ type: Event.PROGRESS, progress });
       maybePostSnapshot();
-      if (performance.now() - lastCheckpoint >= CHECKPOINT_MS) {
-        lastCheckpoint = performance.now();
-        postCheckpoint();
-      }
+      checkpoint();
       return false; // this thread cannot receive Cancel while it runs
     }, SNAPSHOT_MS / 1000));
   } finally {
     running = false;
   }
   maybePostSnapshot();
+  // The finished model too: a later run cancelled before its first model brings this one back.
+  if (session.modelVersion() !== checkpointVersion) postCheckpoint();
   return JSON.parse(session.progress());
 }
 
