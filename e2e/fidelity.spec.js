@@ -35,7 +35,11 @@ test('after a run: the fidelity sentence equal to the CLI\'s, and that the parts
   await expect(quality).toBeVisible();
   const text = await quality.textContent();
   console.log(`page: ${text}`);
-  expect(text.startsWith(cliSentence[0].toUpperCase() + cliSentence.slice(1) + '.')).toBe(true);
+  // The line in plain words (the figures in b0 left out); the core's whole sentence under "technical details".
+  const capital = (t) => t[0].toUpperCase() + t.slice(1) + '.';
+  expect(text.startsWith(capital(cliSentence.replace(/ \([^()]*\bb0\)/g, '')))).toBe(true);
+  expect(text).not.toContain('b0');
+  expect(await page.locator('#quality-tech').textContent()).toContain(capital(cliSentence));
   expect(text).toMatch(/Buildable: no clashes: the closest parts are .+ \d+\.\d mm apart\./);
   const s = await summary(page);
   expect(s.stats.fidelity.hausdorff_mm).toBeGreaterThan(0);

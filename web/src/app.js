@@ -13,7 +13,7 @@ import { modelBaseName, fileNameFromUrl } from './file_names.js';
 export function qualityText(summary) {
   const lines = [];
   const fidelity = summary.stats && summary.stats.fidelity;
-  if (fidelity && fidelity.summary) lines.push(fidelity.summary[0].toUpperCase() + fidelity.summary.slice(1) + '.');
+  if (fidelity && fidelity.summary) lines.push(sentence(plainFidelity(fidelity.summary)));
   if (summary.clearance) {
     const c = summary.clearance;
     lines.push(summary.clashes > 0 ? `Cannot be built as it is: ${c}.` : `Buildable: ${c}.`);
@@ -23,43 +23,64 @@ export function qualityText(summary) {
   return lines.join(' ');
 }
 
+const sentence = (text) => text[0].toUpperCase() + text.slice(1) + '.';
+
+/** The core's fidelity sentence without its figures in b0 (a strut length few builders know). */
+export function plainFidelity(text) {
+  return text.replace(/ \([^()]*\bb0\)/g, '');
+}
+
+/** Behind "technical details": the Zome check in the core's terms and its whole fidelity sentence. */
+export function qualityTechText(s) {
+  const check = s.valid === true ? `valid Zome surface, genus ${s.genus}`
+    : s.valid === false ? `not a valid Zome surface: ${s.validation || 'no reason given'}` : '';
+  const fidelity = s.stats?.fidelity?.summary;
+  return [check && sentence(check), fidelity && sentence(fidelity)].filter(Boolean).join(' ');
+}
+
 function holes(n) {
   return n === 0 ? 'no hole' : n === 1 ? '1 hole' : `${n} holes`;
+}
+
+/** "try 10 cells": a resolution whose model keeps the shape's holes (0: none known). */
+function tryText(keeping) {
+  return keeping > 0 ? `try ${keeping} cells` : 'try the resolution the controls suggest';
 }
 
 /**
  * The line under "Parts", in plain words: the counts, and whether the model is a closed Zome
  * surface with as many holes through it as the shape (`surfaceGenus`; null when the model is not
- * the loaded shape's, e.g. a file or a link).
+ * the loaded shape's, e.g. a file or a link); `keeping`: a resolution that keeps them.
  */
-export function resultText(s, surfaceGenus = null) {
+export function resultText(s, surfaceGenus = null, keeping = 0) {
   const kinds = Object.entries(s.by_kind || {}).map(([k, n]) => `${k} ${n}`).join(', ');
   const counts = `${s.balls} balls, ${s.struts} struts (${kinds})`;
   if (s.valid === null || s.valid === undefined) return counts;
   if (!s.valid) return `${counts} · Not a closed Zome surface${s.validation ? `: ${s.validation}` : ''}`;
   if (surfaceGenus !== null && s.genus !== surfaceGenus) {
     return `${counts} · Warning: the shape has ${holes(surfaceGenus)} through it, this model has ${holes(s.genus)}` +
-      ' (try the resolution the controls suggest).';
+      ` (${tryText(keeping)}).`;
   }
   return `${counts} · a closed surface${surfaceGenus === null ? '' : ' with the shape\'s holes'}`;
 }
 
 /** A builder's one-line verdict at the end of a run: "581 balls, largest gap 96 mm, buildable". */
-export function verdictText(s, surfaceGenus = null) {
+export function verdictText(s, surfaceGenus = null, keeping = 0) {
   const parts = [`${s.balls} balls`];
   const gap = s.stats?.fidelity?.hausdorff_mm;
   if (Number.isFinite(gap)) parts.push(`largest gap ${Math.round(gap)} mm`);
   parts.push(s.clashes > 0 ? 'cannot be built as it is (parts clash)' : 'buildable');
   if (s.valid && surfaceGenus !== null && s.genus !== surfaceGenus) {
-    parts.push(`but it has ${holes(s.genus)} through it where the shape has ${holes(surfaceGenus)}`);
+    parts.push(`but it has ${holes(s.genus)} through it where the shape has ${holes(surfaceGenus)} (${tryText(keeping)})`);
   }
   return parts.join(', ');
 }
 
 export class App {
-  constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl, surfaceToggleEl }) {
+  constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl, surfaceToggleEl,
+    qualityTechEl = globalThis.document?.getElementById?.('quality-tech') ?? null }) {
     Object.assign(this, { bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl,
-      surfaceToggleEl });
+      surfaceToggleEl, qualityTechEl });
     this.surfaceGenus = null; // of the loaded mesh
     this.modelOfSurface = false; // the model on screen was made from the loaded mesh
     this.queued = null; // a file dropped during a run, loaded when it ends
@@ -134,7 +155,7 @@ export class App {
     this.parts.clear();
     this.plot.reset();
     this.summaryEl.textContent = 'The model on screen was made before this shape was loaded: press Run for this one.';
-    if (this.qualityEl) this.qualityEl.textContent = '';
+    this.showQuality(null);
   }
 
   async loadFile(file, options) {
@@ -211,7 +232,7 @@ export class App {
     this.plot.reset();
     this.parts.clear(); // the list follows the new model when the run ends
     this.summaryEl.textContent = 'Running: the parts list follows when the run ends.';
-    if (this.qualityEl) this.qualityEl.textContent = '';
+    this.showQuality(null);
     this.status.note('Running…');
     let final;
     try {
@@ -226,15 +247,32 @@ export class App {
     this.lastProgress = final;
     if (final.state !== 'failed' && final.nodes > 0) this.modelOfSurface = true; // else the old model stays
     const s = await this.refreshResults();
+    const keeping = await this.keepingResolution(s, opts.resolution);
+    if (keeping) this.summaryEl.textContent = resultText(s, this.surfaceGenus, keeping);
     if (final.state === 'failed') this.fail(`run: ${final.error}`);
     else {
       this.lastError = null;
       const how = final.state === 'cancelled' ? 'Cancelled; kept the best model' : 'Finished';
-      const verdict = s ? ` ${verdictText(s, this.surfaceGenus)}.` : '';
+      const verdict = s ? ` ${verdictText(s, this.surfaceGenus, keeping)}.` : '';
       this.status.note(`${how} in ${final.seconds.toFixed(1)} s.${verdict} ${final.note || ''}`.trim());
     }
     this.loadQueued();
     return final;
+  }
+
+  /**
+   * When the run's model lost the shape's holes: the advisor's resolution that keeps them (the
+   * controls' estimate of this resolution has it, else the core is asked); 0 if none is known.
+   */
+  async keepingResolution(s, resolution) {
+    if (!s?.valid || !this.modelOfSurface || s.genus === this.surfaceGenus) return 0;
+    const e = this.controls.lastEstimate;
+    if (e?.resolution === resolution && e.advice_resolution > 0) return e.advice_resolution;
+    try {
+      return (await this.bridge.estimate(resolution)).advice_resolution || 0;
+    } catch {
+      return 0; // the line then points to the controls' advice
+    }
   }
 
   /** The file dropped during the run, now that it has ended. */
@@ -256,14 +294,20 @@ export class App {
       this.parts.show(await this.bridge.parts());
       const s = await this.bridge.summary();
       this.summaryEl.textContent = resultText(s, this.modelOfSurface ? this.surfaceGenus : null);
-      if (this.qualityEl) this.qualityEl.textContent = qualityText(s);
+      this.showQuality(s);
       return s;
     } catch (e) {
       this.parts.clear();
       this.summaryEl.textContent = '';
-      if (this.qualityEl) this.qualityEl.textContent = '';
+      this.showQuality(null);
       return null;
     }
+  }
+
+  /** The quality line in plain words, its technical terms behind "technical details"; null clears. */
+  showQuality(s) {
+    if (this.qualityEl) this.qualityEl.textContent = s ? qualityText(s) : '';
+    if (this.qualityTechEl) this.qualityTechEl.textContent = s ? qualityTechText(s) : '';
   }
 
   async shareLink({ copy = true } = {}) {

@@ -3,7 +3,7 @@
 // successes update the name, the summary and the parts.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { App, qualityText, resultText, verdictText } from '../src/app.js';
+import { App, qualityText, qualityTechText, plainFidelity, resultText, verdictText } from '../src/app.js';
 import { Event } from '../src/protocol.js';
 import { Status } from '../src/status.js';
 import { FakeElement, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
@@ -61,7 +61,13 @@ test('quality line: the fidelity sentence of a run, and whether the parts fit si
     'Cannot be built as it is: 4 clashes: 4 pairs of balls too close.');
   assert.equal(qualityText({ stats: { fidelity: { summary: 'largest gap 24 mm (0.52 b0), where the model misses the surface, at the top' } },
     clashes: 0, clearance: 'no clashes: x' }),
-  'Largest gap 24 mm (0.52 b0), where the model misses the surface, at the top. Buildable: no clashes: x.');
+  'Largest gap 24 mm, where the model misses the surface, at the top. Buildable: no clashes: x.');
+  assert.equal(plainFidelity('largest gap 20 mm (0.43 b0), at the back; typical distance 5.3 mm (RMS 0.113 b0)'),
+    'largest gap 20 mm, at the back; typical distance 5.3 mm');
+  assert.equal(qualityTechText({ valid: true, genus: 1, stats: { fidelity: { summary: 'largest gap 20 mm (0.43 b0)' } } }),
+    'Valid Zome surface, genus 1. Largest gap 20 mm (0.43 b0).');
+  assert.equal(qualityTechText({ valid: false, validation: 'open at 2 edges' }), 'Not a valid Zome surface: open at 2 edges.');
+  assert.equal(qualityTechText({}), '');
   assert.equal(qualityText({ stats: { fold_overs: 2 } }), '2 faces are turned inside out (fold-overs).');
   assert.equal(qualityText({ stats: { fold_overs: 0 } }), '');
 });
@@ -128,7 +134,12 @@ test('result line and verdict in plain words: a lost hole is flagged, clashes ar
   assert.equal(resultText({ ...s, valid: false, validation: 'open at 2 edges' }),
     '256 balls, 600 struts (B0 600) · Not a closed Zome surface: open at 2 edges');
   assert.equal(verdictText({ ...s, genus: 1 }, 1), '256 balls, largest gap 31 mm, buildable');
-  assert.equal(verdictText(s, 1), '256 balls, largest gap 31 mm, buildable, but it has no hole through it where the shape has 1 hole');
+  assert.equal(verdictText(s, 1), '256 balls, largest gap 31 mm, buildable, but it has no hole through it where the shape ' +
+    'has 1 hole (try the resolution the controls suggest)');
+  assert.equal(resultText(s, 1, 10), '256 balls, 600 struts (B0 600) · Warning: the shape has 1 hole through it, ' +
+    'this model has no hole (try 10 cells).');
+  assert.equal(verdictText(s, 1, 10), '256 balls, largest gap 31 mm, buildable, but it has no hole through it where the ' +
+    'shape has 1 hole (try 10 cells)');
   assert.equal(verdictText({ ...s, clashes: 2, stats: {} }, null), '256 balls, cannot be built as it is (parts clash)');
 });
 
@@ -205,4 +216,25 @@ test('loadUrl: an unreachable URL is one status line; an odd %-escape in its nam
     restoreDocument();
     restoreFetch();
   }
+});
+
+test('a run that lost the shape\'s hole names a resolution that keeps it, asked of the core', async () => {
+  const t = makeApp();
+  t.bridge.load = async () => ({ kind: 'mesh', report: { vertices: 8, faces: 12, genus: 1 } });
+  const asked = [];
+  t.bridge.estimate = async (r) => { asked.push(r); return { kept: false, advice_resolution: 12 }; };
+  t.bridge.run = async () => ({ state: 'done', seconds: 2, nodes: 20, note: '' });
+  t.controls.get = () => ({ resolution: 6, seconds: 1 });
+  await t.app.loadBytes('ring.obj', new ArrayBuffer(1), { chooseResolution: false });
+  await t.app.run();
+  assert.deepEqual(asked, [6]);
+  assert.match(t.summaryEl.textContent, /this model has no hole \(try 12 cells\)\.$/);
+  assert.match(t.statusEl.textContent, /but it has no hole through it where the shape has 1 hole \(try 12 cells\)\.$/);
+  // A run stopped before it made a model (nodes 0) leaves the old model, which is not compared.
+  t.bridge.load = async () => ({ kind: 'mesh', report: { vertices: 8, faces: 12, genus: 1 } });
+  await t.app.loadBytes('other.obj', new ArrayBuffer(1), { chooseResolution: false });
+  t.bridge.run = async () => ({ state: 'cancelled', seconds: 0.3, nodes: 0, note: '' });
+  await t.app.run();
+  assert.deepEqual(asked, [6]);
+  assert.equal(t.summaryEl.textContent, '5 balls, 4 struts (B0 2, Y0 1, R0 1) · a closed surface');
 });
