@@ -1,5 +1,5 @@
-// The parts list and kit plan as a table. Hovering a strut row highlights those struts in the
-// viewer (onHover(kindIds | null)).
+// The parts list and kit plan as a table. Hovering or focusing (Tab) a strut row highlights those
+// struts in the viewer (onHover(kindIds | null)).
 import { KIND_NAMES } from './protocol.js';
 
 export const SWATCH = { blue: '#1f5fd6', yellow: '#f2c20f', red: '#d42a1e', white: '#f4f4f4' };
@@ -67,8 +67,14 @@ export class PartsTable {
         const swatch = cell('span', '', 'swatch');
         swatch.style.background = SWATCH[r.color];
         kindCell.prepend(swatch);
-        tr.addEventListener('mouseenter', () => { tr.classList.add('hover'); this.onHover(r.kindIds); });
-        tr.addEventListener('mouseleave', () => { tr.classList.remove('hover'); this.onHover(null); });
+        const on = () => { tr.classList.add('hover'); this.onHover(r.kindIds); };
+        const off = () => { tr.classList.remove('hover'); this.onHover(null); };
+        tr.addEventListener('mouseenter', on);
+        tr.addEventListener('mouseleave', off);
+        // Keyboard users reach the same highlight with Tab.
+        tr.tabIndex = 0;
+        tr.addEventListener('focus', on);
+        tr.addEventListener('blur', off);
       }
       tr.append(cell('td', r.part), kindCell, cell('td', r.length), cell('td', r.count, 'n'));
       tr.dataset.kind = r.kind;

@@ -57,6 +57,10 @@ test('the table on the page: hovering a strut row highlights its kind; leaving c
     r1.dispatch('mouseleave');
     rows[1].dispatch('mouseenter'); // the ball row highlights nothing
     assert.deepEqual(hovered, [[7], null]);
+    assert.equal(r1.tabIndex, 0); // reachable with Tab, and focus highlights as hover does
+    r1.dispatch('focus');
+    r1.dispatch('blur');
+    assert.deepEqual(hovered, [[7], null, [7], null]);
     assert.match(root.querySelector('#parts-totals').textContent, /^226 balls, 577 struts/);
     table.clear();
     assert.equal(root.querySelector('#parts-table').children.length, 0);
