@@ -1,13 +1,14 @@
 // What a cancelled run leaves (issue 26, items 1 and 7): in the single-threaded page a Cancel right
 // after the run's first model keeps that model, not the one from before the run (the worker sends
 // the first model as a checkpoint at once); in both builds the bar is not full and the progress
-// line says "cancelled".
+// line says "cancelled". A file dropped during a single-threaded run loads once Cancel has
+// replaced the blocked worker.
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
 import { PORT_NO_COI } from './playwright.config.js';
 import { MESHES } from './support/paths.js';
-import { openPage, summary, waitRunning, clickCancelTimed, expectNoPageErrors } from './support/page.js';
+import { openPage, summary, dropFile, waitRunning, clickCancelTimed, expectNoPageErrors } from './support/page.js';
 
 const sphere = [...fs.readFileSync(path.join(MESHES, 'sphere.obj'))];
 
@@ -49,5 +50,20 @@ test('threaded: a cancelled run\'s bar is not full and says cancelled', async ({
   await page.waitForTimeout(1000);
   await clickCancelTimed(page);
   await expectCancelledBar(page);
+  await expectNoPageErrors(errors);
+});
+
+test('single-threaded: a file dropped during a run loads after Cancel, into the fresh worker', async ({ page }) => {
+  const { errors } = await openPage(page, `http://127.0.0.1:${PORT_NO_COI}/`);
+  await page.locator('#autorun').uncheck();
+  await startSphereRun(page);
+  await dropFile(page, 'cube.obj', fs.readFileSync(path.join(MESHES, 'cube.obj')));
+  await expect(page.locator('#status')).toContainText('cube.obj will load when this run ends');
+  await clickCancelTimed(page);
+  await expect(page.locator('#surface-info')).toContainText('cube.obj', { timeout: 20_000 });
+  await expect(page.locator('#status')).toContainText('cube.obj loaded');
+  const second = await page.evaluate(() => window.zomeify.run({ resolution: 6, seconds: 1 }));
+  expect(second.state).toBe('done');
+  expect((await summary(page)).genus).toBe(0);
   await expectNoPageErrors(errors);
 });
