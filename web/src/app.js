@@ -191,6 +191,8 @@ export class App {
     if (model) await this.loadBytes(sample.id + '.zome.json', model, { fit });
     await this.loadBytes(sample.mesh, mesh, { fit: !model, chooseResolution: false, fresh: !model });
     this.modelOfSurface = Boolean(model);
+    // The sample's model was made from this mesh: its line now compares their holes.
+    if (model && this.shownSummary) this.summaryEl.textContent = resultText(this.shownSummary, this.surfaceGenus);
     this.controls.set({ resolution: sample.resolution });
     this.status.note(`Sample: ${sample.label} (${sample.credit}). Drop your own mesh anywhere, or press Run.`);
     if (!model) await this.run();
@@ -293,10 +295,12 @@ export class App {
     try {
       this.parts.show(await this.bridge.parts());
       const s = await this.bridge.summary();
+      this.shownSummary = s;
       this.summaryEl.textContent = resultText(s, this.modelOfSurface ? this.surfaceGenus : null);
       this.showQuality(s);
       return s;
     } catch (e) {
+      this.shownSummary = null;
       this.parts.clear();
       this.summaryEl.textContent = '';
       this.showQuality(null);

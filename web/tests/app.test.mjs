@@ -238,3 +238,14 @@ test('a run that lost the shape\'s hole names a resolution that keeps it, asked 
   assert.deepEqual(asked, [6]);
   assert.equal(t.summaryEl.textContent, '5 balls, 4 struts (B0 2, Y0 1, R0 1) · a closed surface');
 });
+
+test('a sample: its finished model, then its mesh; the result line compares their holes', async () => {
+  const t = makeApp();
+  t.bridge.load = async (name) => (name.endsWith('.zome.json') ? { kind: 'model' }
+    : { kind: 'mesh', report: { vertices: 8, faces: 12, genus: 0 } });
+  const bytes = Promise.resolve(new ArrayBuffer(1));
+  await t.app.showSample('torus', { sample: { id: 'torus', mesh: 'torus.obj', label: 'Torus', credit: 'x', resolution: 8 },
+    mesh: bytes, model: bytes });
+  assert.equal(t.summaryEl.textContent, "5 balls, 4 struts (B0 2, Y0 1, R0 1) · a closed surface with the shape's holes");
+  assert.equal(t.bridge.calls.length, 0); // no run: the finished model is shown
+});
