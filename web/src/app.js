@@ -24,6 +24,8 @@ export function qualityText(summary) {
 }
 
 const sentence = (text) => text[0].toUpperCase() + text.slice(1) + '.';
+/** The core's note as a sentence after the verdict ("at 6 cells …" → "At 6 cells ….", once). */
+const asSentence = (text) => sentence(text.replace(/\.$/, ''));
 
 /** The core's fidelity sentence without its figures in b0 (a strut length few builders know). */
 export function plainFidelity(text) {
@@ -256,7 +258,7 @@ export class App {
       this.lastError = null;
       const how = final.state === 'cancelled' ? 'Cancelled; kept the best model' : 'Finished';
       const verdict = s ? ` ${verdictText(s, this.surfaceGenus, keeping)}.` : '';
-      this.status.note(`${how} in ${final.seconds.toFixed(1)} s.${verdict} ${final.note || ''}`.trim());
+      this.status.note(`${how} in ${final.seconds.toFixed(1)} s.${verdict} ${final.note ? asSentence(final.note) : ''}`.trim());
     }
     this.loadQueued();
     return final;

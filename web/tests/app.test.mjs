@@ -171,7 +171,7 @@ test('a run gets the controls\' options; the end is reported with time and note'
   assert.deepEqual(t.controls.sets, [{ seed: 3 }]);
   assert.deepEqual(t.bridge.calls, [['run', { seconds: 5, seed: 3 }]]);
   assert.equal(final.state, 'done');
-  assert.equal(t.statusEl.textContent, 'Finished in 1.5 s. 5 balls, buildable. target reached');
+  assert.equal(t.statusEl.textContent, 'Finished in 1.5 s. 5 balls, buildable. Target reached.');
   assert.deepEqual(t.controls.running, [true, false]);
   assert.equal(t.app.runCount, 1);
   t.bridge.run = async () => ({ state: 'cancelled', seconds: 2, note: '' });
