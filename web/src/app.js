@@ -257,7 +257,7 @@ export class App {
     else {
       this.lastError = null;
       const how = final.state === 'cancelled' ? 'Cancelled; kept the best model' : 'Finished';
-      const verdict = s ? ` ${verdictText(s, this.surfaceGenus, keeping)}.` : '';
+      const verdict = s ? ` ${verdictText(s, this.modelOfSurface ? this.surfaceGenus : null, keeping)}.` : '';
       this.status.note(`${how} in ${final.seconds.toFixed(1)} s.${verdict} ${final.note ? asSentence(final.note) : ''}`.trim());
     }
     this.loadQueued();

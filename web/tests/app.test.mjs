@@ -237,6 +237,7 @@ test('a run that lost the shape\'s hole names a resolution that keeps it, asked 
   await t.app.run();
   assert.deepEqual(asked, [6]);
   assert.equal(t.summaryEl.textContent, '5 balls, 4 struts (B0 2, Y0 1, R0 1) · a closed surface');
+  assert.equal(t.statusEl.textContent, 'Cancelled; kept the best model in 0.3 s. 5 balls, buildable.');
 });
 
 test('a sample: its finished model, then its mesh; the result line compares their holes', async () => {
