@@ -73,7 +73,7 @@ export class CoreBridge {
         note: 'The run was stopped before it made a model; the model from before it is kept.' };
     }
     return { ...last, state: 'cancelled',
-      note: 'The run was stopped; the model as it was at the last checkpoint (within a second) is kept.' };
+      note: 'The run was stopped; the model as it was up to a second before is kept.' };
   }
 
   on(type, callback) {
