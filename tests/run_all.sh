@@ -47,23 +47,34 @@ run_ctest() { # run_ctest DIR [ctest args]
 }
 
 skip() { [ "${!1:-0}" = 1 ]; }
+
+# Wall time of each lane, printed together at the end (CI must stay under 45 minutes).
+lane_times=(); lane_start=$SECONDS
+lane_done() { # lane_done NAME
+  lane_times+=("$(printf '%-10s %4d s' "$1" $((SECONDS - lane_start)))"); lane_start=$SECONDS
+}
+print_lane_times() { echo "lane times:"; printf '  %s\n' "${lane_times[@]}"; }
 sanitizers=1; skip ZOME_SKIP_SANITIZERS && sanitizers=0
 
 bash tests/build.sh native || { echo "tests: 0 passed, 1 failed"; exit 1; }
 run_ctest build/native
+lane_done native
 if ! skip ZOME_SKIP_WASM; then
   bash tests/build.sh wasm || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }
   run_ctest build/wasm
+  lane_done wasm
 fi
 if [ -f web/tests/run.sh ] && ! skip ZOME_SKIP_JS; then
   log=$(mktemp)
   bash web/tests/run.sh 2>&1 | tee "$log"
   count_summary "$log" tests
   rm -f "$log"
+  lane_done js
 fi
 if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_ASAN; then
   bash tests/build.sh asan || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_ctest build/asan
+  lane_done asan
 fi
 if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_TSAN; then
   if bash tests/build.sh tsan; then
@@ -73,12 +84,14 @@ if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_TSAN; then
   else
     count 0 1
   fi
+  lane_done tsan
 fi
 if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_FUZZ; then
   log=$(mktemp)
   bash tests/fuzz/run.sh "${ZOME_FUZZ_SECONDS:-15}" 2>&1 | tee "$log"
   count_summary "$log" fuzz
   rm -f "$log"
+  lane_done fuzz
 fi
 if [ -f e2e/run.sh ] && ! skip ZOME_SKIP_E2E; then
   # e2e/run.sh may print its own "tests: N passed, M failed"; otherwise its exit status is one result.
@@ -88,7 +101,10 @@ if [ -f e2e/run.sh ] && ! skip ZOME_SKIP_E2E; then
     count_summary "$log" tests
   elif [ "$rc" -eq 0 ]; then count 1 0; else count 0 1; fi
   rm -f "$log"
+  lane_done e2e
 fi
+
+print_lane_times
 
 echo "tests: $total_pass passed, $total_fail failed"
 exit $status
