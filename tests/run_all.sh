@@ -5,7 +5,7 @@
 #   2b. JS unit tests of the page (web/tests/run.sh, node --test; no browser)
 #   3. AddressSanitizer + UBSan build + the whole GoogleTest suite and the fuzz regression corpus
 #   4. ThreadSanitizer build + the tests labelled `parallel` (ctest -L parallel)
-#   5. libFuzzer smoke run: every fuzz target for ZOME_FUZZ_SECONDS (default 15) seconds
+#   5. libFuzzer smoke run: every fuzz target for ZOME_FUZZ_SECONDS (default 10) seconds
 #   6. e2e/run.sh (Playwright in Chromium) when it exists
 # Ends with one line "tests: N passed, M failed" summing the ctest counts, one per fuzz target and the
 # e2e count. For local use, lanes can be skipped: ZOME_SKIP_WASM=1, ZOME_SKIP_ASAN=1, ZOME_SKIP_TSAN=1,
@@ -57,7 +57,9 @@ print_lane_times() { echo "lane times:"; printf '  %s\n' "${lane_times[@]}"; }
 sanitizers=1; skip ZOME_SKIP_SANITIZERS && sanitizers=0
 
 bash tests/build.sh native || { echo "tests: 0 passed, 1 failed"; exit 1; }
-run_ctest build/native
+# anneal_parallel reruns the multi-threaded tests for the ThreadSanitizer lane (ctest -L parallel);
+# the other lanes already run each of them once.
+run_ctest build/native -LE parallel
 lane_done native
 if ! skip ZOME_SKIP_WASM; then
   bash tests/build.sh wasm || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }
@@ -73,14 +75,14 @@ if [ -f web/tests/run.sh ] && ! skip ZOME_SKIP_JS; then
 fi
 if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_ASAN; then
   bash tests/build.sh asan || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }
-  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_ctest build/asan
+  ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 run_ctest build/asan -LE parallel
   lane_done asan
 fi
 if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_TSAN; then
   if bash tests/build.sh tsan; then
     echo "tsan lane: tests labelled 'parallel':"
     (cd build/tsan-lane && ctest -N -L parallel | grep -E 'Test +#|Total Tests')
-    TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" run_ctest build/tsan-lane -L parallel
+    ZOME_STRESS_SECONDS=60 TSAN_OPTIONS="halt_on_error=1 second_deadlock_stack=1" run_ctest build/tsan-lane -L parallel
   else
     count 0 1
   fi
@@ -88,7 +90,7 @@ if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_TSAN; then
 fi
 if [ $sanitizers = 1 ] && ! skip ZOME_SKIP_FUZZ; then
   log=$(mktemp)
-  bash tests/fuzz/run.sh "${ZOME_FUZZ_SECONDS:-15}" 2>&1 | tee "$log"
+  bash tests/fuzz/run.sh "${ZOME_FUZZ_SECONDS:-10}" 2>&1 | tee "$log"
   count_summary "$log" fuzz
   rm -f "$log"
   lane_done fuzz
