@@ -83,11 +83,12 @@ template <class F> std::string guarded(F &&body)
     }
 }
 
-InitialModelOptions z0_options(int resolution, long long genus)
+InitialModelOptions z0_options(int resolution, long long genus, const SurfaceProjector &projector)
 {
     InitialModelOptions o;
     o.resolution = resolution;
     o.target_genus = genus;
+    o.surface_probe = probe_of(projector); // as the pipeline's run builds Z0
     return o;
 }
 
@@ -199,7 +200,7 @@ namespace
 // the surface's, and the finished model's size and kits.
 std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface &s, int resolution)
 {
-    InitialModel z0 = build_initial_model(s.mesh, s.is_inside(), z0_options(resolution, s.report.genus));
+    InitialModel z0 = build_initial_model(s.mesh, s.is_inside(), z0_options(resolution, s.report.genus, *s.projector));
     nlohmann::json out;
     out["ok"] = true;
     out["resolution"] = resolution;
@@ -252,6 +253,7 @@ std::string Session::auto_resolution()
             const LoadedSurface &s = idle_surface();
             AutoResolutionOptions options;
             options.seconds = 3.0;
+            options.initial.surface_probe = probe_of(*s.projector);
             const AutoResolution a = choose_resolution(s.mesh, s.report.genus, s.is_inside(), options);
             nlohmann::json out = z0_estimate(s, a.resolution).second;
             out["kept"] = a.genus_kept;

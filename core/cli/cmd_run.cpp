@@ -145,6 +145,8 @@ std::string summary(const std::string &path, const PipelineResult &r, const std:
       << " quads from " << z0.voxels << " voxels; genus " << z0.topology.genus << " against the surface's "
       << r.surface_genus << (z0.topology.genus == r.surface_genus ? " (kept)" : " (NOT kept)") << ". Cleanup removed "
       << z0.repair.removed << " and added " << z0.repair.added << " simple voxels";
+    if (z0.carve.removed > 0)
+        s << "; " << z0.carve.removed - z0.carve.restored << " voxels outside the surface carved away";
     if (z0.attempt_used > 0)
         s << "; nudged grid " << z0.attempt_used << " (cell x" << z0.layout.scale_factor << ") used";
     if (z0.attempts > 1)

@@ -64,10 +64,12 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
     const SurfaceProjector projector(surface);
     const InsideTest inside(projector);
     const InsidePredicate is_inside = [&](const Vec3& p) { return inside.is_inside(p); };
+    z0_options.surface_probe = probe_of(projector);
     if (options.b1 == 0.0 && options.resolution == kAutoResolution)
     {
         AutoResolutionOptions automatic;
         automatic.seconds = options.advisor_seconds;
+        automatic.initial.surface_probe = z0_options.surface_probe;
         r.automatic = choose_resolution(surface, surface_genus, is_inside, automatic);
         z0_options.resolution = r.automatic->resolution;
     }

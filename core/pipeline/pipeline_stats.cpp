@@ -128,6 +128,9 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
                     {"cleanup_removed", z0.repair.removed},
                     {"cleanup_added", z0.repair.added},
                     {"cavity_cells_filled", z0.voxelize.cavity_cells},
+                    {"carved", z0.carve.removed - z0.carve.restored},
+                    {"carve_kept_for_thin_parts", z0.carve.kept_for_coverage},
+                    {"carve_restored_for_fold_overs", z0.carve.restored},
                     {"seconds", r.initial_seconds}};
     if (!r.advice.empty())
         j["advice"] = r.advice;

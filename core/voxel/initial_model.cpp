@@ -45,7 +45,7 @@ std::string describe(const GridSpec &grid, const GridLayoutOptions &layout)
 } // namespace
 
 InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSource &source,
-                                 const InitialModelOptions &options)
+                                 const InitialModelOptions &options, const InsidePredicate *carve_inside)
 {
     Stopwatch clock;
     InitialModel out;
@@ -71,6 +71,12 @@ InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSou
                  << " non-manifold vertices left with no simple cell to flip";
             rep.notes.push_back(note.str());
             continue;
+        }
+        rep.carve = {};
+        if (options.carve && carve_inside)
+        {
+            rep.carve = carve_outside_cells(grid, *carve_inside, options.surface_probe);
+            rep.voxels = grid.occupied_count();
         }
         Extraction ex = extract_boundary(grid);
         out.model = std::move(ex.model);
@@ -114,7 +120,7 @@ InitialModel build_initial_model(const TriangleMesh &surface, const InsidePredic
         stats.emplace_back();
         return voxelize(surface, spec, inside, &stats.back());
     };
-    InitialModel out = build_initial_model(bounding_box(surface), source, options);
+    InitialModel out = build_initial_model(bounding_box(surface), source, options, &inside);
     out.report.voxelize = stats.at(static_cast<size_t>(out.report.attempt_used));
     return out;
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/voxel/carve.h"
 #include "core/voxel/extract.h"
 #include "core/voxel/repair.h"
 #include "core/voxel/voxel_grid.h"
@@ -29,6 +30,11 @@ struct InitialModelOptions
     //! retries; the first grid that reaches this genus is taken, else the first manifold one.
     long long target_genus = -1;
     RepairOptions repair;
+    //! Carve the manifold cell set toward S (carve.h): cells whose centre is outside S go where the
+    //! topology allows, so Z0 hugs S instead of enclosing it.
+    bool carve = true;
+    //! When set, carving's guards (coverage of thin parts, fold-overs; carve.h) use it.
+    SurfaceProbeAt surface_probe;
 };
 
 //! What happened, for the CLI's summary and --stats.
@@ -41,6 +47,7 @@ struct InitialModelReport
     GridSpec grid;                  //!< that grid
     VoxelizeStats voxelize;         //!< of that grid
     RepairReport repair;            //!< of that grid
+    CarveReport carve;              //!< of that grid
     size_t voxels = 0;              //!< occupied cells after the cleanup
     BoundaryTopology topology;      //!< of the extracted boundary
     double seconds = 0.0;           //!< wall time of the whole build
@@ -60,9 +67,10 @@ using VoxelSource = std::function<VoxelGrid(const GridSpec &)>;
 //! offset of a fraction of a cell, different for every attempt.
 GridLayoutOptions nudged_layout(const InitialModelOptions &options, int attempt);
 
-//! Builds Z0 over the box `bbox` (min, max) from the cells `source` gives for each grid tried.
+//! Builds Z0 over the box `bbox` (min, max) from the cells `source` gives for each grid tried;
+//! with `carve_inside` (and options.carve) each manifold cell set is carved with it.
 InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSource &source,
-                                 const InitialModelOptions &options);
+                                 const InitialModelOptions &options, const InsidePredicate *carve_inside = nullptr);
 
 //! Builds Z0 for surface S; `inside` classifies points of space (e.g. geom's InsideTest).
 InitialModel build_initial_model(const TriangleMesh &surface, const InsidePredicate &inside,

@@ -57,6 +57,7 @@ Scene bunny()
     const InsideTest inside(*s.projector);
     InitialModelOptions o;
     o.resolution = kResolution;
+    o.surface_probe = probe_of(*s.projector);
     o.target_genus = 0;
     s.z0 = build_initial_model(s.surface, [&](const Vec3& p) { return inside.is_inside(p); }, o).model;
     return s;

@@ -32,6 +32,7 @@ nlohmann::json curve(const std::string &name, double seconds, int threads)
     InitialModelOptions initial;
     const auto it = resolutions.find(name);
     initial.resolution = it == resolutions.end() ? 12 : it->second;
+    initial.surface_probe = probe_of(projector);
     const ZomeModel z0 =
         build_initial_model(surface, [&](const Vec3 &p) { return inside.is_inside(p); }, initial).model;
 

@@ -36,6 +36,7 @@ static int run_bench(int argc, char** argv)
 
     InitialModelOptions options;
     options.resolution = resolution;
+    options.surface_probe = probe_of(projector);
     InitialModel z0;
     const double total = bench::median_seconds(kRuns, [&] { z0 = build_initial_model(mesh, is_inside, options); });
 

@@ -60,6 +60,7 @@ SharedScene shared_scene(const std::string &mesh_name, int resolution, const Pro
     const InsideTest inside(*s.projector);
     InitialModelOptions options;
     options.resolution = resolution;
+    options.surface_probe = probe_of(*s.projector); // as a run builds Z0
     InitialModel z0 = build_initial_model(
         s.projector->mesh(), [&](const Vec3 &p) { return inside.is_inside(p); }, options);
     if (!z0.report.valid)
