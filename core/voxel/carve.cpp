@@ -68,7 +68,7 @@ bool holds_surface_alone(const VoxelGrid &grid, const CellIndex &c, const Surfac
             for (int x = 0; x <= 2; ++x)
             {
                 const Vec3 p = spec.origin + spec.cell * Vec3(c.i + 0.5 * x, c.j + 0.5 * y, c.k + 0.5 * z);
-                if (probe(p).distance < near && distance_to_neighbours(grid, c, p) > 0.5)
+                if (distance_to_neighbours(grid, c, p) > 0.5 && probe(p).distance < near)
                     return true;
             }
     return false;

@@ -42,6 +42,20 @@ std::string describe(const GridSpec &grid, const GridLayoutOptions &layout)
     return os.str();
 }
 
+// Carves the accepted grid and extracts Z0 again. Carving keeps the topology, so the genus is judged
+// on the plain grid and only the grid that is kept pays for the carving.
+void carve(VoxelGrid &grid, InitialModel &out, const InitialModelOptions &options, const InsidePredicate *inside)
+{
+    if (!options.carve || !inside)
+        return;
+    InitialModelReport &rep = out.report;
+    rep.carve = carve_outside_cells(grid, *inside, options.surface_probe);
+    rep.voxels = grid.occupied_count();
+    Extraction ex = extract_boundary(grid);
+    out.model = std::move(ex.model);
+    rep.topology = ex.topology;
+}
+
 } // namespace
 
 InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSource &source,
@@ -52,7 +66,12 @@ InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSou
     InitialModelReport &rep = out.report;
     // The first manifold result, kept in case no nudged grid reaches the target genus: the user's
     // own grid then wins over a nudged one that is no better.
-    std::optional<InitialModel> first_valid;
+    struct FirstValid
+    {
+        InitialModel model;
+        VoxelGrid grid;
+    };
+    std::optional<FirstValid> first_valid;
     VoxelGrid grid;
     for (int attempt = 0; attempt <= std::max(0, options.max_retries); ++attempt)
     {
@@ -73,31 +92,28 @@ InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSou
             continue;
         }
         rep.carve = {};
-        if (options.carve && carve_inside)
-        {
-            rep.carve = carve_outside_cells(grid, *carve_inside, options.surface_probe);
-            rep.voxels = grid.occupied_count();
-        }
         Extraction ex = extract_boundary(grid);
         out.model = std::move(ex.model);
         rep.topology = ex.topology;
         if (options.target_genus < 0 || rep.topology.genus == options.target_genus)
         {
             first_valid.reset();
+            carve(grid, out, options, carve_inside);
             break;
         }
         std::ostringstream note;
         note << describe(rep.grid, rep.layout) << ": genus " << rep.topology.genus << ", not " << options.target_genus;
         rep.notes.push_back(note.str());
         if (!first_valid)
-            first_valid = out;
+            first_valid = FirstValid{out, grid};
     }
     if (first_valid)
     {
         // No grid reached the target genus: fall back to the first manifold one.
         std::vector<std::string> notes = std::move(rep.notes);
         const int attempts = rep.attempts;
-        out = std::move(*first_valid);
+        out = std::move(first_valid->model);
+        carve(first_valid->grid, out, options, carve_inside);
         rep.notes = std::move(notes);
         rep.attempts = attempts;
     }

@@ -17,6 +17,7 @@ TEST(AutoResolution, CoarsestGridKeepingTheGenusWithEnoughBallsOnEverySharedMesh
         const LoadedSurface &s = shared_surface(name);
         AutoResolutionOptions options;
         options.seconds = 1e9; // bounded by max_resolution, so the answer does not depend on the machine
+        options.initial.surface_probe = probe_of(*s.projector); // as a run does
         const AutoResolution a = choose_resolution(s.mesh, s.genus, s.predicate(), options);
         ASSERT_TRUE(a.genus_kept) << a.message; // every shared mesh keeps its genus below 64 cells
         EXPECT_GE(a.balls, options.min_balls);
@@ -27,7 +28,7 @@ TEST(AutoResolution, CoarsestGridKeepingTheGenusWithEnoughBallsOnEverySharedMesh
         EXPECT_EQ(a.trials.back().resolution, a.resolution);
 
         // Z0 at the chosen grid is what the run will start from: enough balls, the genus kept.
-        InitialModelOptions z0_options;
+        InitialModelOptions z0_options = options.initial;
         z0_options.resolution = a.resolution;
         z0_options.target_genus = s.genus;
         const InitialModel z0 = build_initial_model(s.mesh, s.predicate(), z0_options);
