@@ -72,7 +72,7 @@ public:
     //! with the writers' options (VEF without faces, OBJ in metres).
     //! Throws InvalidInputError for an unknown format or when there is no model.
     std::string export_model(const std::string &file_name, const WriteOptions &options = {}) const;
-    //! The share-link fragment m=1.… of the current model, or {ok:false,error}.
+    //! The share-link fragment m=2.… of the current model, or {ok:false,error}.
     std::string link() const;
     //! {balls, struts, faces, by_kind{...}, genus?, valid, source, stats{}}.
     std::string summary() const;

@@ -33,7 +33,7 @@ export function installApi(app, { ready, warmedUp, info }) {
     progress: () => app.lastProgress,
     summary: () => app.bridge.summary(),
     parts: () => app.bridge.parts(),
-    /** The page's address with the model in its fragment (#m=1.…). */
+    /** The page's address with the model in its fragment (#m=2.…). */
     shareLink: () => app.shareLink({ copy: false }),
     openLink: async (link) => {
       const result = await app.openLink(link);

@@ -17,7 +17,7 @@ export const Request = Object.freeze({
   SURFACE: 'surface',     // {}                              → {positions, triangles} | null
   PARTS: 'parts',         // {}                              → parts report (see core/parts/parts_report.h)
   EXPORT: 'export',       // {name, options?: {vefFaces, objUnits}} → {name, bytes: Uint8Array}
-  LINK: 'link',           // {}                              → {link: 'm=1.…'}
+  LINK: 'link',           // {}                              → {link: 'm=2.…'}
   SUMMARY: 'summary',     // {}                              → Summary
   WARM_UP: 'warmUp',      // {}                              → {ms}  (a short hidden run; see core_worker.js)
 });
