@@ -112,7 +112,7 @@ std::string write_glb(const ZomeModel& model)
 
     const int ball_mat = add_material(m, "ball white", ball_color_linear());
     const int ball_mesh =
-        add_mesh(m, make_sphere(static_cast<float>(kBallDiameterMm / 2 * kM), 16, 10), ball_mat, kBallPartCode);
+        add_mesh(m, make_sphere(static_cast<float>(kBallDiameterMm / 2 * kM), 16, 10), ball_mat, "ball");
     for (size_t i = 0; i < geo.ball_centres.size(); ++i)
         add_node(std::string(kBallPartCode) + " ball " + std::to_string(i), ball_mesh, geo.ball_centres[i]);
     int color_mat[3] = {-1, -1, -1};

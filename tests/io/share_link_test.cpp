@@ -269,6 +269,7 @@ TEST(ShareLink, PapersBunnyWithItsFacesStaysShort)
     b.faces = r.faces;
     b.transform = {};
     const std::string link = encode_share_link(b);
+    RecordProperty("characters", static_cast<int>(link.size()));
     EXPECT_LE(link.size(), 1900u);
     const ZomeModel back = decode_share_link(link);
     EXPECT_EQ(test::canonical(back), test::canonical(b));
