@@ -52,11 +52,13 @@ void sort_around(const Dir& normal, const std::vector<Dir>& d, std::vector<uint3
     std::vector<Item> items;
     for (size_t i = 0; i < nb.size(); ++i)
         items.push_back({dot(d[i], t1), dot(d[i], t2), nb[i]});
-    auto upper = [](const Item& a) { return a.y > 0 || (a.y == 0 && a.x > 0); };
+    // 0: along the normal (no angle), 1: angles in [0, π), 2: angles in [π, 2π). Within a class the
+    // cross product orders strictly, so the comparison is a strict weak order on every platform.
+    auto half = [](const Item& a) { return a.x == 0 && a.y == 0 ? 0 : (a.y > 0 || (a.y == 0 && a.x > 0)) ? 1 : 2; };
     std::stable_sort(items.begin(), items.end(), [&](const Item& a, const Item& b) {
-        const bool ua = upper(a), ub = upper(b);
-        if (ua != ub)
-            return ua;
+        const int ha = half(a), hb = half(b);
+        if (ha != hb)
+            return ha < hb;
         const double c = a.x * b.y - a.y * b.x;
         if (c != 0)
             return c > 0;
