@@ -25,17 +25,52 @@ Dir unit(const Dir& a)
     return n > 0 ? Dir{a[0] / n, a[1] / n, a[2] / n} : Dir{0, 0, 0};
 }
 
-// The dominant axis of the cross products of a node's strut directions, sign unknown.
+using Mat3 = std::array<Dir, 3>;
+
+Dir times(const Mat3& m, const Dir& v) { return {dot(m[0], v), dot(m[1], v), dot(m[2], v)}; }
+
+// The leading eigenvector and eigenvalue of a symmetric positive semi-definite 3×3 matrix by
+// power iteration from its largest column (a fixed number of steps: deterministic).
+std::pair<Dir, double> leading_eigen(const Mat3& m)
+{
+    Dir v = m[0];
+    for (const Dir& row : m)
+        if (dot(row, row) > dot(v, v))
+            v = row;
+    v = unit(v);
+    for (int i = 0; i < 40 && dot(v, v) > 0; ++i)
+        v = unit(times(m, v));
+    return {v, dot(v, times(m, v))};
+}
+
+// An axis around which a node's struts keep their order. Away from the node, -Σ unit directions
+// is the axis of a cone (corners and edges of a shape); on flat and nearly flat nodes it lies in
+// the tangent plane, and the cross products of pairs of struts, all close to ± the normal, give
+// it instead: their principal axis, used when it clearly dominates.
 Dir axis_of(const std::vector<Dir>& d)
 {
-    Dir sum{0, 0, 0};
+    Dir cone{0, 0, 0};
+    Mat3 m{};
     for (size_t i = 0; i < d.size(); ++i)
+    {
+        cone = sub(cone, d[i]);
         for (size_t j = i + 1; j < d.size(); ++j)
         {
             const Dir c = cross(d[i], d[j]);
-            sum = dot(sum, c) < 0 ? sub(sum, c) : add(sum, c);
+            for (size_t r = 0; r < 3; ++r)
+                for (size_t k = 0; k < 3; ++k)
+                    m[r][k] += c[r] * c[k];
         }
-    return unit(sum);
+    }
+    const auto [e1, l1] = leading_eigen(m);
+    Mat3 rest = m;
+    for (size_t r = 0; r < 3; ++r)
+        for (size_t k = 0; k < 3; ++k)
+            rest[r][k] -= l1 * e1[r] * e1[k];
+    const double l2 = leading_eigen(rest).second;
+    if (l1 > 3 * l2 || dot(cone, cone) == 0)
+        return dot(e1, cone) < 0 ? neg(e1) : e1;
+    return unit(cone);
 }
 
 // Neighbours sorted counter-clockwise around `normal` (no atan2: half-plane, then cross sign).
