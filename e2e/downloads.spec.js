@@ -45,16 +45,16 @@ test('VEF, GLB, OBJ, JSON and CSV downloads parse back', async ({ page }) => {
   await openPage(page);
   const parts = await page.evaluate(() => window.zomeify.parts());
 
-  const faces = {};
+  const vefFaces = {};
   for (const format of ['vef', 'vef-struts', 'json']) {
     const [file] = await download(page, format);
     const back = partsOf(file);
     expect(back.balls, format).toBe(parts.balls);
     expect(back.struts, format).toEqual(parts.struts);
-    if (format !== 'json') faces[format] = vefFaceCount(fs.readFileSync(file, 'utf8'));
+    if (format !== 'json') vefFaces[format] = vefFaceCount(fs.readFileSync(file, 'utf8'));
   }
-  expect(faces.vef).toBeGreaterThan(0);
-  expect(faces['vef-struts']).toBe(0);
+  expect(vefFaces.vef).toBeGreaterThan(0);
+  expect(vefFaces['vef-struts']).toBe(0);
 
   const [csv] = await download(page, 'csv');
   const rows = fs.readFileSync(csv, 'utf8').trim().split('\n').slice(1).map((l) => l.split(','));
