@@ -1,5 +1,6 @@
 // Each download parses back: VEF and JSON through the native CLI, CSV, GLB and OBJ in JS. OBJ and
-// its MTL arrive as one .zip (one download, so the browser never asks to allow several).
+// its MTL arrive as one .zip (one download, so the browser never asks to allow several). The GLB
+// passes the Khronos validator; "VEF, no panels" has the struts and no faces.
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
@@ -7,6 +8,18 @@ import { OUT } from './support/paths.js';
 import { partsOf } from './support/cli.js';
 import { openPage } from './support/page.js';
 import { readZipStored } from '../web/tests/helpers/read_zip.mjs';
+import validator from 'gltf-validator';
+
+// The face count of a VEF text (header, vertices W X Y Z, edges, then faces).
+function vefFaceCount(text) {
+  const t = text.trim().split(/\s+/);
+  let i = 5; // vZome VEF 6 field golden
+  const vertices = Number(t[i++]);
+  i += 4 * vertices;
+  const edges = Number(t[i++]);
+  i += 2 * edges;
+  return Number(t[i]);
+}
 
 async function download(page, format) {
   const files = [];
@@ -32,12 +45,16 @@ test('VEF, GLB, OBJ, JSON and CSV downloads parse back', async ({ page }) => {
   await openPage(page);
   const parts = await page.evaluate(() => window.zomeify.parts());
 
-  for (const format of ['vef', 'json']) {
+  const vefFaces = {};
+  for (const format of ['vef', 'vef-struts', 'json']) {
     const [file] = await download(page, format);
     const back = partsOf(file);
     expect(back.balls, format).toBe(parts.balls);
     expect(back.struts, format).toEqual(parts.struts);
+    if (format !== 'json') vefFaces[format] = vefFaceCount(fs.readFileSync(file, 'utf8'));
   }
+  expect(vefFaces.vef).toBeGreaterThan(0);
+  expect(vefFaces['vef-struts']).toBe(0);
 
   const [csv] = await download(page, 'csv');
   const rows = fs.readFileSync(csv, 'utf8').trim().split('\n').slice(1).map((l) => l.split(','));
@@ -53,6 +70,9 @@ test('VEF, GLB, OBJ, JSON and CSV downloads parse back', async ({ page }) => {
   const gltf = JSON.parse(bytes.toString('utf8', 20, 20 + jsonLength));
   const strutsTotal = Object.values(parts.struts).reduce((a, b) => a + b, 0);
   expect(gltf.nodes.length).toBeGreaterThanOrEqual(parts.balls + strutsTotal);
+  const report = await validator.validateBytes(new Uint8Array(bytes));
+  expect([report.issues.numErrors, report.issues.numWarnings]).toEqual([0, 0]);
+  expect(gltf.nodes[1].name).toMatch(/^PZB-BAL-W ball \d+$/);
 
   const [zip] = await download(page, 'obj');
   expect(path.basename(zip)).toMatch(/\.zip$/);

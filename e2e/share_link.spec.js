@@ -6,7 +6,7 @@ test('share link round trip in a fresh page', async ({ page, browser }) => {
   await openPage(page);
   const parts = await page.evaluate(() => window.zomeify.parts());
   const url = await page.evaluate(() => window.zomeify.shareLink());
-  expect(url).toMatch(/#m=1\./);
+  expect(url).toMatch(/#m=2\./);
 
   const fresh = await (await browser.newContext()).newPage();
   const { errors } = await openPage(fresh, url);

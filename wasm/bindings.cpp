@@ -4,6 +4,7 @@
 #include <emscripten/bind.h>
 #include <emscripten/val.h>
 
+#include "core/io/obj_export.h"
 #include "core/zome/slots.h"
 #include "wasm/run_options.h"
 #include "wasm/session.h"
@@ -51,11 +52,13 @@ public:
     std::string summary() const { return s_.summary(); }
 
     //! {ok, bytes: Uint8Array} or {ok:false, error}.
-    val export_model(const std::string &name) const
+    val export_model(const std::string &name) const { return export_model_with(name, true, "mm"); }
+    //! The same with the writers' options: faces in a VEF, OBJ units ("mm" or "m").
+    val export_model_with(const std::string &name, bool vef_faces, const std::string &obj_units) const
     {
         try
         {
-            const std::string bytes = s_.export_model(name);
+            const std::string bytes = s_.export_model(name, WriteOptions{parse_obj_units(obj_units), vef_faces});
             val out = val::object();
             out.set("ok", true);
             out.set("bytes", val::global("Uint8Array")
@@ -169,6 +172,7 @@ EMSCRIPTEN_BINDINGS(zomeify_web)
         .function("surface", &WebSession::surface)
         .function("parts", &WebSession::parts)
         .function("exportModel", &WebSession::export_model)
+        .function("exportModelWith", &WebSession::export_model_with)
         .function("link", &WebSession::link)
         .function("summary", &WebSession::summary);
     emscripten::function("maxThreads", &max_threads);

@@ -489,7 +489,7 @@ std::string Session::parts() const
         });
 }
 
-std::string Session::export_model(const std::string &file_name) const
+std::string Session::export_model(const std::string &file_name, const WriteOptions &options) const
 {
     const ZomeModel m = model();
     if (m.nodes.empty())
@@ -498,10 +498,10 @@ std::string Session::export_model(const std::string &file_name) const
     if (ext == ".obj" || ext == ".mtl")
     {
         const size_t dot = file_name.find_last_of('.');
-        const ObjExport obj = write_obj(m, file_name.substr(0, dot) + ".mtl");
+        const ObjExport obj = write_obj(m, file_name.substr(0, dot) + ".mtl", options.obj_units);
         return ext == ".obj" ? obj.obj : obj.mtl;
     }
-    return write_model_buffer(m, file_name);
+    return write_model_buffer(m, file_name, options);
 }
 
 std::string Session::link() const

@@ -14,6 +14,7 @@
 #include <thread>
 
 #include "core/geom/triangle_mesh.h"
+#include "core/io/model_io.h"
 #include "core/surface/prepare.h"
 #include "core/zome/model.h"
 #include "wasm/run_progress.h"
@@ -67,10 +68,11 @@ public:
 
     //! The parts list and kit plan of the current model (parts_report_json) or {ok:false,error}.
     std::string parts() const;
-    //! The current model in the format of `file_name`'s extension (.vef .glb .obj .mtl .zome.json .csv).
+    //! The current model in the format of `file_name`'s extension (.vef .glb .obj .mtl .zome.json .csv),
+    //! with the writers' options (VEF without faces, OBJ in metres).
     //! Throws InvalidInputError for an unknown format or when there is no model.
-    std::string export_model(const std::string &file_name) const;
-    //! The share-link fragment m=1.… of the current model, or {ok:false,error}.
+    std::string export_model(const std::string &file_name, const WriteOptions &options = {}) const;
+    //! The share-link fragment m=2.… of the current model, or {ok:false,error}.
     std::string link() const;
     //! {balls, struts, faces, by_kind{...}, genus?, valid, source, stats{}}.
     std::string summary() const;

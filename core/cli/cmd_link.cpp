@@ -6,6 +6,7 @@
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
 #include "core/cli/model_input.h"
+#include "core/cli/output_options.h"
 #include "core/io/model_io.h"
 #include "core/io/share_link.h"
 
@@ -13,7 +14,7 @@ namespace zomeify::cli {
 
 int cmd_link(const CommandArgs& argv)
 {
-    const Args args(argv, {"--decode", "-o"}, {});
+    const Args args(argv, {"--decode", "-o", kObjUnitsOption}, {kNoFacesFlag});
     if (const auto fragment = args.value("--decode"))
     {
         args.expect_positional(0, "zomeify link --decode FRAGMENT -o OUT");
@@ -21,11 +22,12 @@ int cmd_link(const CommandArgs& argv)
         if (outputs.empty())
             throw InvalidInputError("missing -o OUT");
         for (const std::string& out : outputs) check_writable_model_name(out);
+        const WriteOptions options = write_options(args);
         const ZomeModel model = decode_share_link(*fragment);
         warn_of_clashes(model, "the link");
         for (const std::string& out : outputs)
         {
-            write_model_file(out, model);
+            write_model_file(out, model, options);
             std::cout << "wrote " << out << " (" << model.nodes.size() << " balls, " << model.struts.size()
                       << " struts)\n";
         }

@@ -14,6 +14,7 @@
 #include "core/base/errors.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
+#include "core/cli/output_options.h"
 #include "core/io/model_io.h"
 #include "core/pipeline/pipeline.h"
 #include "core/pipeline/run_settings.h"
@@ -181,8 +182,8 @@ int cmd_run(const CommandArgs &argv)
                     {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
                      "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius",
                      "--w-distance", "--w-orientation", "--w-fairing", "--w-complexity", "--w-surface", "--surface-cap",
-                     "--surface-spacing", "--surface-zone", "--w-fold"},
-                    {"--initial-only", "--paper-energy", "--no-clearance", "--allow-fold-overs"});
+                     "--surface-spacing", "--surface-zone", "--w-fold", kObjUnitsOption},
+                    {"--initial-only", "--paper-energy", "--no-clearance", "--allow-fold-overs", kNoFacesFlag});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())
@@ -190,6 +191,7 @@ int cmd_run(const CommandArgs &argv)
     if (args.has("--resolution") && args.has("--b1"))
         throw InvalidInputError("give --resolution or --b1, not both");
     const PipelineOptions options = pipeline_options(args);
+    const WriteOptions write = write_options(args);
     for (const std::string &out : outputs)
         check_output_name(out);
 
@@ -212,7 +214,7 @@ int cmd_run(const CommandArgs &argv)
     const std::string stats = pipeline_stats_json(r);
     r.model.stats_json = pipeline_stats_json(r, -1);
     for (const std::string &out : outputs)
-        write_model_file(out, r.model);
+        write_model_file(out, r.model, write);
     if (const auto stats_path = args.value("--stats"))
     {
         std::ofstream f(*stats_path);

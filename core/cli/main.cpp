@@ -14,12 +14,14 @@ const std::vector<Command>& commands()
     static const std::vector<Command> list = {
         {"inspect", "inspect MESH [--json]                 vertices, faces, closed, manifold, components, genus, bbox", cmd_inspect},
         {"parts", "parts MODEL [--json | --csv] [--have KITS]  parts list and kit plan of a .zome.json or .vef model", cmd_parts},
-        {"convert", "convert MODEL -o OUT [-o OUT2 ...]     to .zome.json, .vef, .glb, .obj (+.mtl) or .csv", cmd_convert},
+        {"convert", "convert MODEL -o OUT [-o OUT2 ...] [--obj-units mm|m] [--no-faces]   to .zome.json, .vef, .glb (metres),\n"
+                    "          .obj (+.mtl; mm unless --obj-units m) or .csv; --no-faces: VEF without panels", cmd_convert},
         {"link", "link MODEL | link --decode FRAGMENT -o OUT   share-link fragment of a model, and back", cmd_link},
         {"score", "score MODEL --mesh MESH [--b0 L] [--json]  energy, fold-overs and distance of a model against a mesh", cmd_score},
         {"run", "run MESH -o OUT [-o OUT2 ...] [--resolution N | --b1 L] [--target-nodes N] [--seconds S | --proposals N]\n"
                 "          [--threads T] [--seed K] [--t0 T | --t0-factor F] [--t-min T | --t-min-ratio R]\n"
-                "          [--operator-weights I,A,S,R,F,M,N] [--coverage-radius B0S] [--initial-only] [--stats STATS.json]   Z0, then annealing",
+                "          [--operator-weights I,A,S,R,F,M,N] [--coverage-radius B0S] [--initial-only] [--stats STATS.json]\n"
+                "          [--obj-units mm|m] [--no-faces]   Z0, then annealing",
          cmd_run},
     };
     return list;

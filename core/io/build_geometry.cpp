@@ -1,5 +1,6 @@
 #include "core/io/build_geometry.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/base/errors.h"
@@ -16,9 +17,9 @@ float srgb_to_linear(float c)
     return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
-std::array<float, 3> linear(float r, float g, float b)
+std::array<float, 3> linear(const std::array<float, 3>& srgb)
 {
-    return {srgb_to_linear(r), srgb_to_linear(g), srgb_to_linear(b)};
+    return {srgb_to_linear(srgb[0]), srgb_to_linear(srgb[1]), srgb_to_linear(srgb[2])};
 }
 
 // The unit quaternion rotating +Y onto the unit vector d.
@@ -79,56 +80,95 @@ SimpleMesh make_cylinder(float radius, float length, int sides)
 SimpleMesh make_sphere(float radius, int slices, int stacks)
 {
     SimpleMesh m;
-    for (int s = 0; s <= stacks; ++s)
+    auto add = [&](const std::array<float, 3>& n) {
+        m.normals.push_back(n);
+        m.positions.push_back({radius * n[0], radius * n[1], radius * n[2]});
+    };
+    add({0.0f, 1.0f, 0.0f}); // top pole: vertex 0
+    for (int s = 1; s < stacks; ++s)
     {
         const float theta = kPi * static_cast<float>(s) / static_cast<float>(stacks);
-        for (int i = 0; i <= slices; ++i)
+        for (int i = 0; i < slices; ++i)
         {
             const float phi = 2 * kPi * static_cast<float>(i) / static_cast<float>(slices);
-            const std::array<float, 3> n{std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)};
-            m.normals.push_back(n);
-            m.positions.push_back({radius * n[0], radius * n[1], radius * n[2]});
+            add({std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi)});
         }
     }
-    const auto row = static_cast<uint32_t>(slices + 1);
-    for (uint32_t s = 0; s < static_cast<uint32_t>(stacks); ++s)
-        for (uint32_t i = 0; i < static_cast<uint32_t>(slices); ++i)
+    add({0.0f, -1.0f, 0.0f}); // bottom pole: the last vertex
+    const auto n_slices = static_cast<uint32_t>(slices), n_stacks = static_cast<uint32_t>(stacks);
+    const auto bottom = static_cast<uint32_t>(m.positions.size() - 1);
+    // Vertex of stack s (0 = top pole, stacks = bottom pole) and slice i (wrapping around).
+    auto at = [&](uint32_t s, uint32_t i) -> uint32_t {
+        if (s == 0)
+            return 0;
+        if (s == n_stacks)
+            return bottom;
+        return 1 + (s - 1) * n_slices + i % n_slices;
+    };
+    for (uint32_t s = 0; s < n_stacks; ++s)
+        for (uint32_t i = 0; i < n_slices; ++i)
         {
-            const uint32_t a = s * row + i, b = a + 1, c = a + row, d = c + 1;
+            const uint32_t a = at(s, i), b = at(s, i + 1), c = at(s + 1, i), d = at(s + 1, i + 1);
             if (s != 0)
                 m.indices.insert(m.indices.end(), {a, c, b});
-            if (s + 1 != static_cast<uint32_t>(stacks))
+            if (s + 1 != n_stacks)
                 m.indices.insert(m.indices.end(), {b, c, d});
         }
     return m;
 }
 
-std::array<float, 3> zome_color_linear(Color c)
+std::array<float, 3> zome_color_srgb(Color c)
 {
     switch (c)
     {
     case Color::Blue:
-        return linear(0.05f, 0.36f, 0.75f);
+        return {0.05f, 0.36f, 0.75f};
     case Color::Yellow:
-        return linear(0.98f, 0.78f, 0.05f);
+        return {0.98f, 0.78f, 0.05f};
     case Color::Red:
-        return linear(0.80f, 0.10f, 0.10f);
+        return {0.80f, 0.10f, 0.10f};
     }
     return {1, 1, 1};
 }
 
+std::array<float, 3> ball_color_srgb()
+{
+    return {0.93f, 0.93f, 0.93f};
+}
+
+std::array<float, 3> zome_color_linear(Color c)
+{
+    return linear(zome_color_srgb(c));
+}
+
 std::array<float, 3> ball_color_linear()
 {
-    return linear(0.93f, 0.93f, 0.93f);
+    return linear(ball_color_srgb());
 }
 
 BuildGeometry build_geometry(const ZomeModel& model)
 {
     BuildGeometry g;
-    auto mm = [](const ZVec& p) {
+    // On the table: x and z centred on the balls' extent, the lowest ball resting on y = 0.
+    std::array<double, 3> lo{0, 0, 0}, hi{0, 0, 0};
+    for (size_t i = 0; i < model.nodes.size(); ++i)
+    {
+        const auto d = model.nodes[i].to_double();
+        for (size_t k = 0; k < 3; ++k)
+        {
+            lo[k] = i == 0 ? d[k] : std::min(lo[k], d[k]);
+            hi[k] = i == 0 ? d[k] : std::max(hi[k], d[k]);
+        }
+    }
+    const double radius = kBallDiameterMm / 2;
+    for (size_t k = 0; k < 3; ++k)
+        g.size_mm[k] = model.nodes.empty() ? 0.0 : (hi[k] - lo[k]) * kMmPerB0 + kBallDiameterMm;
+    g.shift_mm = {-0.5 * (lo[0] + hi[0]) * kMmPerB0, radius - lo[1] * kMmPerB0, -0.5 * (lo[2] + hi[2]) * kMmPerB0};
+    auto mm = [&g](const ZVec& p) {
         const auto d = p.to_double();
-        return std::array<float, 3>{static_cast<float>(d[0] * kMmPerB0), static_cast<float>(d[1] * kMmPerB0),
-                                    static_cast<float>(d[2] * kMmPerB0)};
+        return std::array<float, 3>{static_cast<float>(d[0] * kMmPerB0 + g.shift_mm[0]),
+                                    static_cast<float>(d[1] * kMmPerB0 + g.shift_mm[1]),
+                                    static_cast<float>(d[2] * kMmPerB0 + g.shift_mm[2])};
     };
     for (const ZVec& p : model.nodes)
         g.ball_centres.push_back(mm(p));
@@ -145,7 +185,8 @@ BuildGeometry build_geometry(const ZomeModel& model)
         const double len = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
         for (double& x : d)
             x /= len;
-        g.struts_by_kind[static_cast<size_t>(vector_kind(id))].push_back({mm(model.nodes[st[0]]), rotation_from_y(d)});
+        g.struts_by_kind[static_cast<size_t>(vector_kind(id))].push_back(
+            {mm(model.nodes[st[0]]), rotation_from_y(d), static_cast<uint32_t>(s)});
     }
     return g;
 }

@@ -3,6 +3,9 @@
 //! What a built model looks like, for the exporters: real sizes in millimetres (ball 17.673 mm
 //! across, strut lengths node centre to node centre), Zome colours, and one placement per ball
 //! and per strut. Strut thickness is approximate (the real struts are not round).
+//!
+//! The placements are "on the table": the model is centred in x and z and rests on y = 0 (its
+//! lowest ball touches the floor), y up, so that viewers and slicers show it where they expect.
 
 #include <array>
 #include <cstdint>
@@ -22,10 +25,15 @@ struct SimpleMesh
 
 //! A closed cylinder along +Y from y = 0 to y = length.
 SimpleMesh make_cylinder(float radius, float length, int sides);
-//! A UV sphere centred at the origin.
+//! A UV sphere centred at the origin: one vertex per pole and no seam, so it is closed and every
+//! vertex is used (2 + (stacks − 1)·slices vertices).
 SimpleMesh make_sphere(float radius, int slices, int stacks);
 
-//! Linear RGB colour of a strut colour, and of the white balls.
+//! sRGB colour (0..1) of a strut colour and of the white balls: what OBJ's `Kd` holds (three.js's
+//! MTLLoader and Blender read `Kd` as sRGB).
+std::array<float, 3> zome_color_srgb(Color c);
+std::array<float, 3> ball_color_srgb();
+//! The same in linear RGB: what glTF's baseColorFactor holds.
 std::array<float, 3> zome_color_linear(Color c);
 std::array<float, 3> ball_color_linear();
 
@@ -35,15 +43,19 @@ struct Placement
 {
     std::array<float, 3> translation; //!< mm
     std::array<float, 4> rotation;    //!< unit quaternion x, y, z, w taking +Y to the strut
+    uint32_t index = 0;               //!< the ball's or strut's index in the model
 };
 
 struct BuildGeometry
 {
-    std::vector<std::array<float, 3>> ball_centres;                        //!< mm
+    std::vector<std::array<float, 3>> ball_centres;                        //!< mm, on the table
     std::array<std::vector<Placement>, kStrutKindCount> struts_by_kind;    //!< per StrutKind
+    std::array<double, 3> size_mm{};   //!< extent of the balls (centres ± radius), x/y/z
+    std::array<double, 3> shift_mm{};  //!< what was added to the model's own coordinates (in mm)
 };
 
-//! Placements of every ball and strut (InvalidInputError if a strut is not a Zome vector).
+//! Placements of every ball and strut, centred on the table (InvalidInputError if a strut is
+//! not a Zome vector).
 BuildGeometry build_geometry(const ZomeModel& model);
 
 //! Applies a placement to a point of a template mesh.

@@ -87,6 +87,9 @@ int add_material(tinygltf::Model& m, const std::string& name, const std::array<f
 
 std::string write_glb(const ZomeModel& model)
 {
+    // glTF's unit is the metre: geometry and placements are written in metres (not millimetres
+    // under a scaled root), so a tool that flattens or ignores the node tree still gets real size.
+    constexpr double kM = 0.001;
     const BuildGeometry geo = build_geometry(model);
     tinygltf::Model m;
     m.asset.version = "2.0";
@@ -94,20 +97,24 @@ std::string write_glb(const ZomeModel& model)
     m.buffers.resize(1);
 
     tinygltf::Node root;
-    root.name = "zome model (mm)";
+    root.name = "zome model";
     m.nodes.push_back(root);
+    auto add_node = [&m](std::string name, int mesh, const std::array<float, 3>& at_mm) {
+        tinygltf::Node n;
+        n.name = std::move(name);
+        n.mesh = mesh;
+        for (float x : at_mm)
+            n.translation.push_back(static_cast<double>(x) * kM);
+        m.nodes.push_back(std::move(n));
+        m.nodes[0].children.push_back(static_cast<int>(m.nodes.size() - 1));
+        return &m.nodes.back();
+    };
 
     const int ball_mat = add_material(m, "ball white", ball_color_linear());
-    const int ball_mesh = add_mesh(m, make_sphere(static_cast<float>(kBallDiameterMm / 2), 16, 10), ball_mat, "ball");
+    const int ball_mesh =
+        add_mesh(m, make_sphere(static_cast<float>(kBallDiameterMm / 2 * kM), 16, 10), ball_mat, "ball");
     for (size_t i = 0; i < geo.ball_centres.size(); ++i)
-    {
-        tinygltf::Node n;
-        n.name = "ball " + std::to_string(i);
-        n.mesh = ball_mesh;
-        n.translation.assign(geo.ball_centres[i].begin(), geo.ball_centres[i].end());
-        m.nodes.push_back(n);
-        m.nodes[0].children.push_back(static_cast<int>(m.nodes.size() - 1));
-    }
+        add_node(std::string(kBallPartCode) + " ball " + std::to_string(i), ball_mesh, geo.ball_centres[i]);
     int color_mat[3] = {-1, -1, -1};
     for (int k = 0; k < kStrutKindCount; ++k)
     {
@@ -118,16 +125,14 @@ std::string write_glb(const ZomeModel& model)
         const int c = static_cast<int>(kind_color(info.kind));
         if (color_mat[c] < 0)
             color_mat[c] = add_material(m, std::string(info.color), zome_color_linear(kind_color(info.kind)));
-        const int mesh = add_mesh(m, make_cylinder(kStrutRadiusMm, static_cast<float>(info.length_mm), 12), color_mat[c],
-                                  std::string(info.name));
+        const int mesh = add_mesh(m, make_cylinder(static_cast<float>(kStrutRadiusMm * kM),
+                                                   static_cast<float>(info.length_mm * kM), 12),
+                                  color_mat[c], std::string(info.name));
         for (const Placement& p : placements)
         {
-            tinygltf::Node n;
-            n.mesh = mesh;
-            n.translation.assign(p.translation.begin(), p.translation.end());
-            n.rotation.assign(p.rotation.begin(), p.rotation.end());
-            m.nodes.push_back(n);
-            m.nodes[0].children.push_back(static_cast<int>(m.nodes.size() - 1));
+            tinygltf::Node* n = add_node(std::string(info.part_code) + " strut " + std::to_string(p.index), mesh,
+                                         p.translation);
+            n->rotation.assign(p.rotation.begin(), p.rotation.end());
         }
     }
     tinygltf::Scene scene;

@@ -3,7 +3,6 @@
 #include "core/base/errors.h"
 #include "core/io/file_bytes.h"
 #include "core/io/glb_export.h"
-#include "core/io/obj_export.h"
 #include "core/io/vef.h"
 #include "core/io/zome_json.h"
 #include "core/parts/parts_list.h"
@@ -68,18 +67,18 @@ ZomeModel read_model_file(const std::string& path)
     return read_model_buffer(read_file_bytes(path), path);
 }
 
-std::string write_model_buffer(const ZomeModel& model, const std::string& file_name)
+std::string write_model_buffer(const ZomeModel& model, const std::string& file_name, const WriteOptions& options)
 {
     switch (format_of(file_name, true))
     {
     case ModelFormat::ZomeJson:
         return write_zome_json(model);
     case ModelFormat::Vef:
-        return write_vef(model);
+        return write_vef(model, VefWriteOptions{options.vef_faces});
     case ModelFormat::Glb:
         return write_glb(model);
     case ModelFormat::Obj:
-        return write_obj(model, mtl_file_name(file_name)).obj;
+        return write_obj(model, mtl_file_name(file_name), options.obj_units).obj;
     case ModelFormat::Csv:
         return parts_csv(parts_list(model));
     }
@@ -91,16 +90,16 @@ void check_writable_model_name(const std::string& path)
     (void)format_of(path, true);
 }
 
-void write_model_file(const std::string& path, const ZomeModel& model)
+void write_model_file(const std::string& path, const ZomeModel& model, const WriteOptions& options)
 {
     if (format_of(path, true) == ModelFormat::Obj)
     {
-        const ObjExport out = write_obj(model, mtl_file_name(path));
+        const ObjExport out = write_obj(model, mtl_file_name(path), options.obj_units);
         write_file_bytes(path, out.obj);
         write_file_bytes(path.substr(0, path.size() - 4) + ".mtl", out.mtl);
         return;
     }
-    write_file_bytes(path, write_model_buffer(model, path));
+    write_file_bytes(path, write_model_buffer(model, path, options));
 }
 
 } // namespace zomeify

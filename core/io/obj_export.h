@@ -1,13 +1,25 @@
 #pragma once
 //! \file obj_export.h
-//! Wavefront OBJ of the built model (balls and struts as triangle meshes, millimetres) with an
-//! MTL of the Zome colours. OBJ has no instancing, so every part is written out.
+//! Wavefront OBJ of the built model (balls and struts as closed triangle meshes, on the table:
+//! centred in x and z, resting on y = 0, y up) with an MTL of the Zome colours. Millimetres by
+//! default (a maker's unit; the header comment says so), metres on request. OBJ has no
+//! instancing, so every part is written out; every vertex written is used by a face. `Kd` is
+//! sRGB, as three.js's MTLLoader and Blender read it.
 
 #include <string>
 
 #include "core/zome/model.h"
 
 namespace zomeify {
+
+enum class ObjUnits
+{
+    Millimetres,
+    Metres
+};
+
+//! "mm" or "m" (the CLI's --obj-units); InvalidInputError otherwise.
+ObjUnits parse_obj_units(const std::string& text);
 
 struct ObjExport
 {
@@ -16,6 +28,6 @@ struct ObjExport
 };
 
 //! `mtl_name` is the file name the OBJ's `mtllib` line refers to.
-ObjExport write_obj(const ZomeModel& model, const std::string& mtl_name);
+ObjExport write_obj(const ZomeModel& model, const std::string& mtl_name, ObjUnits units = ObjUnits::Millimetres);
 
 } // namespace zomeify

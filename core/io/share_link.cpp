@@ -3,18 +3,21 @@
 #include <algorithm>
 #include <climits>
 #include <cmath>
+#include <functional>
 #include <unordered_map>
 
 #include "core/base/errors.h"
 #include "core/io/byte_codec.h"
 #include "core/io/model_check.h"
+#include "core/io/share_link_faces.h"
 #include "core/zome/slots.h"
 
 namespace zomeify {
 
 namespace {
 
-constexpr uint8_t kFlagTransform = 1, kFlagFaces = 2;
+constexpr uint8_t kFlagTransform = 1, kFlagFaces = 2, kFlagFaceExceptions = 4;
+constexpr uint8_t kNibbleEscape = 15;
 
 [[noreturn]] void fail(const std::string& what)
 {
@@ -32,58 +35,20 @@ bool is_identity(const ModelTransform& t)
     return t == ModelTransform{};
 }
 
-// Sorted neighbour lists, the shared reference frame of the face encoding.
-std::vector<std::vector<uint32_t>> sorted_neighbours(size_t n, const std::vector<std::array<uint32_t, 2>>& struts)
+// The struts as a traversal from one root per component: nodes in discovery order, and for each
+// node the struts it introduces, sorted by vector id.
+struct Traversal
 {
-    std::vector<std::vector<uint32_t>> nb(n);
-    for (const auto& s : struts)
-    {
-        nb[s[0]].push_back(s[1]);
-        nb[s[1]].push_back(s[0]);
-    }
-    for (auto& list : nb)
-        std::sort(list.begin(), list.end());
-    return nb;
-}
+    std::vector<ZVec> roots;
+    std::vector<uint64_t> counts; // per node in discovery order
+    std::vector<uint8_t> ids;     // vector id of every strut
+    std::vector<uint32_t> new_index;
+    std::vector<ZVec> nodes;      // positions in discovery order
+    std::vector<std::array<uint32_t, 2>> struts; // in the new numbering, in link order
+};
 
-void encode_faces(ByteWriter& w, const ZomeModel& m, const std::vector<uint32_t>& new_index,
-                  const std::vector<std::array<uint32_t, 2>>& new_struts)
+Traversal traverse(const ZomeModel& m)
 {
-    const auto nb = sorted_neighbours(m.nodes.size(), new_struts);
-    // Faces in the new numbering, each rotated to start at its smallest corner, then sorted.
-    std::vector<std::vector<uint32_t>> faces;
-    for (const auto& f : m.faces)
-    {
-        std::vector<uint32_t> g;
-        for (uint32_t v : f)
-            g.push_back(new_index[v]);
-        std::rotate(g.begin(), std::min_element(g.begin(), g.end()), g.end());
-        faces.push_back(std::move(g));
-    }
-    std::sort(faces.begin(), faces.end());
-    w.varint(faces.size());
-    int64_t previous_first = 0;
-    for (const auto& g : faces)
-    {
-        w.varint(g.size() - 3);
-        w.zigzag(static_cast<int64_t>(g[0]) - previous_first);
-        previous_first = g[0];
-        for (size_t c = 1; c < g.size(); ++c)
-        {
-            const auto& list = nb[g[c - 1]];
-            const auto it = std::lower_bound(list.begin(), list.end(), g[c]);
-            if (it == list.end() || *it != g[c])
-                throw InvalidInputError("a face edge is not a strut; the model cannot be shared as a link");
-            w.u8(static_cast<uint8_t>(it - list.begin()));
-        }
-    }
-}
-
-} // namespace
-
-std::string encode_share_link(const ZomeModel& m)
-{
-    check_model(m);
     const size_t n = m.nodes.size();
     std::vector<std::vector<Neighbour>> adj(n);
     for (uint32_t s = 0; s < m.struts.size(); ++s)
@@ -91,59 +56,275 @@ std::string encode_share_link(const ZomeModel& m)
         adj[m.struts[s][0]].push_back({m.struts[s][1], s});
         adj[m.struts[s][1]].push_back({m.struts[s][0], s});
     }
-    auto vector_from = [&](uint32_t a, uint32_t b) { return vector_id_of(m.nodes[b] - m.nodes[a]); };
-
-    ByteWriter w;
-    const bool faces = !m.faces.empty(), transform = !is_identity(m.transform);
-    w.u8(static_cast<uint8_t>((transform ? kFlagTransform : 0) | (faces ? kFlagFaces : 0)));
-    w.varint(n);
-    w.varint(m.struts.size());
-
     constexpr uint32_t kNone = UINT32_MAX;
-    std::vector<uint32_t> new_index(n, kNone), order;
-    std::vector<std::array<uint32_t, 2>> new_struts;
-    std::vector<bool> strut_done(m.struts.size(), false);
+    Traversal t;
+    t.new_index.assign(n, kNone);
+    std::vector<uint32_t> order;
     order.reserve(n);
+    std::vector<bool> strut_done(m.struts.size(), false);
     uint32_t next_root = 0;
     for (size_t k = 0; k < n; ++k)
     {
         if (k == order.size())
         {
             // A new component: its lowest-numbered undiscovered node is the root.
-            while (new_index[next_root] != kNone)
+            while (t.new_index[next_root] != kNone)
                 ++next_root;
-            new_index[next_root] = static_cast<uint32_t>(order.size());
+            t.new_index[next_root] = static_cast<uint32_t>(order.size());
             order.push_back(next_root);
-            for (int32_t c : m.nodes[next_root].c)
-                w.zigzag(c);
+            t.roots.push_back(m.nodes[next_root]);
         }
         const uint32_t node = order[k];
         std::vector<std::pair<int, Neighbour>> fresh;
         for (const Neighbour& nbr : adj[node])
             if (!strut_done[nbr.strut])
-                fresh.push_back({vector_from(node, nbr.node), nbr});
+                fresh.push_back({vector_id_of(m.nodes[nbr.node] - m.nodes[node]), nbr});
         std::sort(fresh.begin(), fresh.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
-        w.varint(fresh.size());
+        t.counts.push_back(fresh.size());
         for (const auto& [id, nbr] : fresh)
         {
-            w.u8(static_cast<uint8_t>(id));
+            t.ids.push_back(static_cast<uint8_t>(id));
             strut_done[nbr.strut] = true;
-            if (new_index[nbr.node] == kNone)
+            if (t.new_index[nbr.node] == kNone)
             {
-                new_index[nbr.node] = static_cast<uint32_t>(order.size());
+                t.new_index[nbr.node] = static_cast<uint32_t>(order.size());
                 order.push_back(nbr.node);
             }
-            new_struts.push_back({static_cast<uint32_t>(k), new_index[nbr.node]});
+            t.struts.push_back({static_cast<uint32_t>(k), t.new_index[nbr.node]});
         }
     }
-    if (faces)
-        encode_faces(w, m, new_index, new_struts);
-    if (transform)
+    for (uint32_t old : order)
+        t.nodes.push_back(m.nodes[old]);
+    return t;
+}
+
+// Decodes the strut traversal given the counts and ids (both versions), checking everything.
+void rebuild_struts(ZomeModel& m, uint64_t n, uint64_t s, const std::function<ZVec()>& next_root,
+                    const std::function<uint64_t(uint64_t)>& count_of, const std::function<uint8_t()>& next_id)
+{
+    m.nodes.reserve(n);
+    m.struts.reserve(s);
+    std::unordered_map<ZVec, uint32_t, ZVecHash> index_of;
+    index_of.reserve(n);
+    try
     {
-        w.f64(m.transform.scale);
-        for (double t : m.transform.translation)
-            w.f64(t);
+        for (uint64_t k = 0; k < n; ++k)
+        {
+            if (k == m.nodes.size())
+            {
+                const ZVec root = next_root();
+                if (!index_of.emplace(root, static_cast<uint32_t>(k)).second)
+                    fail("two nodes at one position");
+                m.nodes.push_back(root);
+            }
+            const uint64_t count = count_of(k);
+            if (count > kSlotCount)
+                fail("node " + std::to_string(k) + " claims " + std::to_string(count) + " struts");
+            for (uint64_t i = 0; i < count; ++i)
+            {
+                const uint8_t id = next_id();
+                if (id >= kVectorCount)
+                    fail("strut vector " + std::to_string(id) + " is not a Zome vector");
+                if (m.struts.size() >= s)
+                    fail("more struts than announced");
+                const ZVec target = m.nodes[k] + zome_vector(id);
+                auto [it, inserted] = index_of.emplace(target, static_cast<uint32_t>(m.nodes.size()));
+                if (inserted)
+                {
+                    if (m.nodes.size() >= n)
+                        fail("more nodes than announced");
+                    m.nodes.push_back(target);
+                }
+                m.struts.push_back({static_cast<uint32_t>(k), it->second});
+            }
+        }
     }
+    catch (const OverflowError&)
+    {
+        fail("positions overflow");
+    }
+    if (m.nodes.size() != n || m.struts.size() != s)
+        fail("the node or strut count does not match the data");
+}
+
+ZVec read_root(ByteReader& r)
+{
+    ZVec root;
+    for (int32_t& c : root.c)
+    {
+        const int64_t v = r.zigzag("a root position");
+        if (v < INT32_MIN / 4 || v > INT32_MAX / 4)
+            fail("a root position is out of range");
+        c = static_cast<int32_t>(v);
+    }
+    return root;
+}
+
+void write_transform(ByteWriter& w, const ModelTransform& t)
+{
+    w.f64(t.scale);
+    for (double x : t.translation)
+        w.f64(x);
+}
+
+void read_transform(ByteReader& r, ModelTransform& t)
+{
+    t.scale = r.f64("the transform");
+    for (double& x : t.translation)
+        x = r.f64("the transform");
+    if (!(t.scale > 0) || !std::isfinite(t.scale))
+        fail("the scale is not a positive number");
+    for (double x : t.translation)
+        if (!std::isfinite(x))
+            fail("the translation is not finite");
+}
+
+// Version 1: counts and ids interleaved, a root where a component starts, explicit faces.
+ZomeModel decode_v1(ByteReader& r)
+{
+    const uint8_t flags = r.u8("the flags");
+    if (flags & ~(kFlagTransform | kFlagFaces))
+        fail("unknown flags");
+    const uint64_t n = r.varint("the node count"), s = r.varint("the strut count");
+    // Each node takes at least one byte (its strut count), each strut one byte (its vector).
+    if (n > kMaxModelNodes || n > r.left())
+        fail("the node count " + std::to_string(n) + " is larger than the link holds");
+    if (s > kMaxModelStruts || s > r.left())
+        fail("the strut count " + std::to_string(s) + " is larger than the link holds");
+    ZomeModel m;
+    rebuild_struts(
+        m, n, s, [&] { return read_root(r); },
+        [&](uint64_t k) {
+            const uint64_t count = r.varint("a strut count");
+            if (count > r.left())
+                fail("node " + std::to_string(k) + " claims " + std::to_string(count) + " struts");
+            return count;
+        },
+        [&] { return r.u8("a strut"); });
+    if (flags & kFlagFaces)
+        m.faces = read_explicit_faces(r, m.nodes.size(), m.struts);
+    if (flags & kFlagTransform)
+        read_transform(r, m.transform);
+    return m;
+}
+
+// Version 2: roots first, strut counts as nibbles (15: the count is 15 + a varint that follows
+// the nibbles), vector ids, then faces explicit or as rotation exceptions.
+ZomeModel decode_v2(ByteReader& r)
+{
+    const uint8_t flags = r.u8("the flags");
+    if ((flags & ~(kFlagTransform | kFlagFaces | kFlagFaceExceptions)) ||
+        ((flags & kFlagFaces) && (flags & kFlagFaceExceptions)))
+        fail("unknown flags");
+    const uint64_t n = r.varint("the node count"), s = r.varint("the strut count");
+    if (n > kMaxModelNodes || n > 2 * r.left())
+        fail("the node count " + std::to_string(n) + " is larger than the link holds");
+    if (s > kMaxModelStruts || s > r.left())
+        fail("the strut count " + std::to_string(s) + " is larger than the link holds");
+    const uint64_t components = r.varint("the component count");
+    if (components > n || (n > 0 && components == 0) || components * 6 > r.left())
+        fail("the component count " + std::to_string(components) + " does not fit");
+    std::vector<ZVec> roots;
+    for (uint64_t c = 0; c < components; ++c)
+        roots.push_back(read_root(r));
+    std::vector<uint64_t> counts(n);
+    for (uint64_t k = 0; k < n; k += 2)
+    {
+        const uint8_t b = r.u8("the strut counts");
+        counts[k] = b & 15;
+        if (k + 1 < n)
+            counts[k + 1] = b >> 4;
+        else if (b >> 4)
+            fail("the strut counts end badly");
+    }
+    for (uint64_t& c : counts)
+        if (c == kNibbleEscape)
+        {
+            const uint64_t extra = r.varint("a strut count");
+            if (extra > kSlotCount)
+                fail("a strut count is out of range");
+            c += extra;
+        }
+    size_t next_root = 0;
+    ZomeModel m;
+    rebuild_struts(
+        m, n, s,
+        [&] {
+            if (next_root >= roots.size())
+                fail("more components than announced");
+            return roots[next_root++];
+        },
+        [&](uint64_t k) { return counts[k]; }, [&] { return r.u8("a strut"); });
+    if (next_root != roots.size())
+        fail("fewer components than announced");
+    if (flags & (kFlagFaces | kFlagFaceExceptions))
+    {
+        // The struts must be a valid model before their geometry orders anything.
+        try
+        {
+            check_model(m);
+        }
+        catch (const InvalidInputError& e)
+        {
+            fail(e.what());
+        }
+        m.faces = (flags & kFlagFaces) ? read_explicit_faces(r, m.nodes.size(), m.struts)
+                                       : read_face_exceptions(r, m.nodes, m.struts);
+    }
+    if (flags & kFlagTransform)
+        read_transform(r, m.transform);
+    return m;
+}
+
+} // namespace
+
+std::string encode_share_link(const ZomeModel& m)
+{
+    check_model(m);
+    const Traversal t = traverse(m);
+    ByteWriter faces;
+    uint8_t flags = is_identity(m.transform) ? 0 : kFlagTransform;
+    if (!m.faces.empty())
+    {
+        FaceList renumbered;
+        for (const auto& f : m.faces)
+        {
+            std::vector<uint32_t> g;
+            for (uint32_t v : f)
+                g.push_back(t.new_index[v]);
+            renumbered.push_back(std::move(g));
+        }
+        if (write_face_exceptions(faces, t.nodes, t.struts, renumbered))
+            flags |= kFlagFaceExceptions;
+        else
+        {
+            faces = ByteWriter{};
+            write_explicit_faces(faces, t.nodes.size(), t.struts, renumbered);
+            flags |= kFlagFaces;
+        }
+    }
+    ByteWriter w;
+    w.u8(flags);
+    w.varint(m.nodes.size());
+    w.varint(m.struts.size());
+    w.varint(t.roots.size());
+    for (const ZVec& root : t.roots)
+        for (int32_t c : root.c)
+            w.zigzag(c);
+    for (size_t k = 0; k < t.counts.size(); k += 2)
+    {
+        auto nibble = [&](size_t i) { return i < t.counts.size() ? std::min<uint64_t>(t.counts[i], kNibbleEscape) : 0; };
+        w.u8(static_cast<uint8_t>(nibble(k) | nibble(k + 1) << 4));
+    }
+    for (uint64_t c : t.counts)
+        if (c >= kNibbleEscape)
+            w.varint(c - kNibbleEscape);
+    for (uint8_t id : t.ids)
+        w.u8(id);
+    for (uint8_t b : faces.bytes())
+        w.u8(b);
+    if (flags & kFlagTransform)
+        write_transform(w, m.transform);
     return "m=" + std::to_string(kShareLinkVersion) + "." + base64url_encode(w.bytes());
 }
 
@@ -175,118 +356,13 @@ ZomeModel decode_share_link(std::string_view link)
             fail("the version is not a number");
         version = version * 10 + (c - '0');
     }
-    if (version != kShareLinkVersion)
+    if (version < 1 || version > kShareLinkVersion)
         throw InvalidInputError("this share link has version " + std::to_string(version) +
-                                "; this zomeify reads version " + std::to_string(kShareLinkVersion));
+                                "; this zomeify reads versions 1 to " + std::to_string(kShareLinkVersion));
 
     const std::vector<uint8_t> bytes = base64url_decode(body.substr(dot + 1));
     ByteReader r(bytes);
-    const uint8_t flags = r.u8("the flags");
-    if (flags & ~(kFlagTransform | kFlagFaces))
-        fail("unknown flags");
-    const uint64_t n = r.varint("the node count"), s = r.varint("the strut count");
-    // Each node takes at least one byte (its strut count), each strut one byte (its vector).
-    if (n > kMaxModelNodes || n > r.left())
-        fail("the node count " + std::to_string(n) + " is larger than the link holds");
-    if (s > kMaxModelStruts || s > r.left())
-        fail("the strut count " + std::to_string(s) + " is larger than the link holds");
-
-    ZomeModel m;
-    m.nodes.reserve(n);
-    m.struts.reserve(s);
-    std::unordered_map<ZVec, uint32_t, ZVecHash> index_of;
-    index_of.reserve(n);
-    try
-    {
-        for (uint64_t k = 0; k < n; ++k)
-        {
-            if (k == m.nodes.size())
-            {
-                ZVec root;
-                for (int32_t& c : root.c)
-                {
-                    const int64_t v = r.zigzag("a root position");
-                    if (v < INT32_MIN / 4 || v > INT32_MAX / 4)
-                        fail("a root position is out of range");
-                    c = static_cast<int32_t>(v);
-                }
-                if (!index_of.emplace(root, static_cast<uint32_t>(k)).second)
-                    fail("two nodes at one position");
-                m.nodes.push_back(root);
-            }
-            const uint64_t count = r.varint("a strut count");
-            if (count > kSlotCount || count > r.left())
-                fail("node " + std::to_string(k) + " claims " + std::to_string(count) + " struts");
-            for (uint64_t i = 0; i < count; ++i)
-            {
-                const uint8_t id = r.u8("a strut");
-                if (id >= kVectorCount)
-                    fail("strut vector " + std::to_string(id) + " is not a Zome vector");
-                if (m.struts.size() >= s)
-                    fail("more struts than announced");
-                const ZVec target = m.nodes[k] + zome_vector(id);
-                auto [it, inserted] = index_of.emplace(target, static_cast<uint32_t>(m.nodes.size()));
-                if (inserted)
-                {
-                    if (m.nodes.size() >= n)
-                        fail("more nodes than announced");
-                    m.nodes.push_back(target);
-                }
-                m.struts.push_back({static_cast<uint32_t>(k), it->second});
-            }
-        }
-    }
-    catch (const OverflowError&)
-    {
-        fail("positions overflow");
-    }
-    if (m.nodes.size() != n || m.struts.size() != s)
-        fail("the node or strut count does not match the data");
-
-    if (flags & kFlagFaces)
-    {
-        const auto nb = sorted_neighbours(m.nodes.size(), m.struts);
-        const uint64_t f = r.varint("the face count");
-        if (f > kMaxModelFaces || f * 3 > r.left())
-            fail("the face count " + std::to_string(f) + " is larger than the link holds");
-        int64_t first = 0;
-        m.faces.resize(f);
-        for (uint64_t i = 0; i < f; ++i)
-        {
-            const uint64_t k = r.varint("a face") + 3;
-            if (k > kMaxFaceSize)
-                fail("face " + std::to_string(i) + " has too many corners");
-            first += r.zigzag("a face");
-            if (first < 0 || static_cast<uint64_t>(first) >= n)
-                fail("face " + std::to_string(i) + " starts at a missing node");
-            auto& face = m.faces[i];
-            face.push_back(static_cast<uint32_t>(first));
-            for (uint64_t c = 1; c < k; ++c)
-            {
-                const uint8_t j = r.u8("a face");
-                const auto& list = nb[face.back()];
-                if (j >= list.size())
-                    fail("face " + std::to_string(i) + " follows a missing strut");
-                face.push_back(list[j]);
-            }
-            // The corners follow struts; the closing edge must be one too, or the model could not be
-            // shared again (the encoder refuses faces whose edges are not struts).
-            const auto& last = nb[face.back()];
-            if (!std::binary_search(last.begin(), last.end(), face.front()))
-                fail("face " + std::to_string(i) + " does not close along a strut");
-        }
-    }
-    if (flags & kFlagTransform)
-    {
-        m.transform.scale = r.f64("the transform");
-        for (double& t : m.transform.translation)
-            t = r.f64("the transform");
-        if (!(m.transform.scale > 0) || !std::isfinite(m.transform.scale))
-            fail("the scale is not a positive number");
-        for (double t : m.transform.translation)
-            if (!std::isfinite(t))
-                fail("the translation is not finite");
-    }
+    ZomeModel m = version == 1 ? decode_v1(r) : decode_v2(r);
     if (!r.done())
         fail("unexpected data at the end");
     try

@@ -8,6 +8,7 @@
 #include "core/base/errors.h"
 #include "core/io/file_bytes.h"
 #include "core/io/model_check.h"
+#include "core/io/vef_number.h"
 #include "core/zome/slots.h"
 
 namespace zomeify {
@@ -75,21 +76,112 @@ size_t parse_count(Tokens& t, const char* what, size_t tokens_per_item, size_t l
     return static_cast<size_t>(n);
 }
 
-// "(a,b)" = a·φ + b, or a plain integer b. Integer coefficients only.
-QPhi parse_golden(std::string_view s, const std::string& what)
+// Field names whose numbers read as golden ones: the golden field under its names, fields whose
+// first two irrationals are 1 and φ (their other factors must be zero), and "rational".
+bool golden_compatible(std::string_view field)
 {
-    if (s.size() >= 2 && s.front() == '(' && s.back() == ')')
+    return field == "golden" || field == "polygon5" || field == "snubDodecahedron" || field == "snubDodec" ||
+           field == "rational";
+}
+
+// What comes between the header and the vertex count (vZome's order): field, actual,
+// dimension, scale, offset.
+struct VefPreamble
+{
+    bool rational_only = false;
+    size_t dimension = 4;
+    std::vector<GoldenFraction> scale;  // one per dimension
+    std::vector<GoldenFraction> offset; // one per dimension
+};
+
+VefPreamble read_preamble(Tokens& t)
+{
+    VefPreamble p;
+    if (t.peek() == "field")
     {
-        const std::string_view inner = s.substr(1, s.size() - 2);
-        const size_t comma = inner.find(',');
-        if (comma == std::string_view::npos || inner.find(',', comma + 1) != std::string_view::npos)
-            fail(what + ": '" + std::string(s.substr(0, 40)) + "' is not a golden number (a,b)");
-        const std::string_view a = inner.substr(0, comma), b = inner.substr(comma + 1);
-        if (a.find('/') != std::string_view::npos || b.find('/') != std::string_view::npos)
-            fail(what + ": fractional coordinates are not supported");
-        return QPhi{parse_int(b, what), parse_int(a, what)};
+        t.next("field");
+        const std::string_view field = t.next("the field name");
+        if (!golden_compatible(field))
+            fail("field '" + std::string(field.substr(0, 40)) +
+                 "' is not the golden field Zometool uses (golden, polygon5, snubDodecahedron or rational)");
+        p.rational_only = field == "rational";
     }
-    return QPhi{parse_int(s, what), 0};
+    if (t.peek() == "actual")
+        t.next("actual"); // vZome ignores it now: the scale is the user's
+    if (t.peek() == "dimension")
+    {
+        t.next("dimension");
+        const int64_t d = parse_int(t.next("the dimension"), "dimension");
+        if (d != 3 && d != 4)
+            fail("dimension " + std::to_string(d) + " is not supported (3 or 4)");
+        p.dimension = static_cast<size_t>(d);
+    }
+    p.scale.assign(p.dimension, GoldenFraction{QPhi{1, 0}, 1});
+    if (t.peek() == "scale")
+    {
+        t.next("scale");
+        if (t.peek() == "vector")
+        {
+            t.next("vector");
+            for (auto& s : p.scale)
+                s = parse_vef_number(t.next("the scale vector"), p.rational_only, "scale");
+        }
+        else
+            p.scale.assign(p.dimension, parse_vef_number(t.next("the scale"), p.rational_only, "scale"));
+    }
+    p.offset.assign(p.dimension, GoldenFraction{});
+    if (t.peek() == "offset")
+    {
+        t.next("offset");
+        for (auto& o : p.offset)
+            o = parse_vef_number(t.next("the offset"), p.rational_only, "offset");
+    }
+    return p;
+}
+
+// Exact positions at `phi_power` m: twice our coordinate = raw · φ^(−m). Returns false if some
+// strut is then no Zome vector. Positions off the lattice (a fractional offset) are moved by
+// the first vertex's position when the struts allow it. Returns the first bad strut, or −1.
+long place_at(int m, const std::vector<std::array<GoldenFraction, 3>>& raw, ZomeModel& model, bool& moved)
+{
+    const GoldenFraction f{phi_power(-m), 1};
+    std::vector<std::array<GoldenFraction, 3>> t(raw.size());
+    bool integral = true;
+    for (size_t i = 0; i < raw.size(); ++i)
+        for (size_t k = 0; k < 3; ++k)
+        {
+            t[i][k] = raw[i][k] * f;
+            integral = integral && t[i][k].is_integral();
+        }
+    auto zvec = [](const std::array<GoldenFraction, 3>& x) { return ZVec::from_twice(x[0].n, x[1].n, x[2].n); };
+    for (size_t e = 0; e < model.struts.size(); ++e)
+    {
+        const auto& s = model.struts[e];
+        std::array<GoldenFraction, 3> d;
+        bool whole = true;
+        for (size_t k = 0; k < 3; ++k)
+        {
+            d[k] = t[s[1]][k] - t[s[0]][k];
+            whole = whole && d[k].is_integral();
+        }
+        if (!whole || vector_id_of(zvec(d)) < 0)
+            return static_cast<long>(e);
+    }
+    moved = !integral;
+    model.nodes.resize(raw.size());
+    for (size_t i = 0; i < raw.size(); ++i)
+    {
+        std::array<GoldenFraction, 3> x = t[i];
+        if (moved)
+            for (size_t k = 0; k < 3; ++k)
+            {
+                x[k] = x[k] - t[0][k];
+                if (!x[k].is_integral())
+                    fail("vertex " + std::to_string(i) + " is not on the Zome lattice of vertex 0");
+            }
+        model.nodes[i] = zvec(x);
+    }
+    return -1;
 }
 
 } // namespace
@@ -102,25 +194,31 @@ ZomeModel read_vef(std::string_view text, VefReadInfo* info)
     if (t.next("header") != "vZome" || t.next("header") != "VEF")
         fail("it does not start with 'vZome VEF'");
     const int64_t version = parse_int(t.next("version"), "version");
-    if (t.peek() == "field")
-    {
-        t.next("field");
-        const std::string_view field = t.next("field name");
-        if (field != "golden")
-            fail("field '" + std::string(field) + "' is not supported (Zometool models use 'golden')");
-    }
-
-    // Raw exact coordinates (Z[φ]) first; the scale is decided once the struts are known.
-    const size_t nv = parse_count(t, "vertex", 4, kMaxModelNodes);
-    std::vector<std::array<QPhi, 3>> raw(nv);
-    for (size_t i = 0; i < nv; ++i)
-    {
-        const std::string where = "vertex " + std::to_string(i);
-        parse_golden(t.next("a vertex"), where); // W, unused
-        for (int k = 0; k < 3; ++k)
-            raw[i][static_cast<size_t>(k)] = parse_golden(t.next("a vertex"), where);
-    }
     ZomeModel model;
+    std::vector<std::array<GoldenFraction, 3>> raw;
+    try
+    {
+        const VefPreamble pre = read_preamble(t);
+        // Raw exact coordinates first; the scale is decided once the struts are known.
+        const size_t nv = parse_count(t, "vertex", pre.dimension, kMaxModelNodes);
+        raw.resize(nv);
+        const size_t first = pre.dimension - 3; // 4D: W X Y Z, W dropped as vZome projects
+        for (size_t i = 0; i < nv; ++i)
+        {
+            const std::string where = "vertex " + std::to_string(i);
+            for (size_t k = 0; k < pre.dimension; ++k)
+            {
+                const GoldenFraction x = parse_vef_number(t.next("a vertex"), pre.rational_only, where);
+                if (k >= first)
+                    raw[i][k - first] = x * pre.scale[k] + pre.offset[k];
+            }
+        }
+    }
+    catch (const OverflowError&)
+    {
+        fail("coordinates are too large");
+    }
+    const size_t nv = raw.size();
     const size_t ne = parse_count(t, "edge", 2, kMaxModelStruts);
     model.struts.resize(ne);
     for (size_t e = 0; e < ne; ++e)
@@ -164,42 +262,29 @@ ZomeModel read_vef(std::string_view text, VefReadInfo* info)
     if (!t.done())
         fail("unexpected text after the ball list: '" + std::string(t.peek().substr(0, 40)) + "'");
 
-    // Scale: twice our coordinate = raw · φ^(−m) for a file drawn at 2φ^m raw units per b0.
-    auto scaled = [&](int m) {
-        const QPhi f = phi_power(-m);
-        std::vector<ZVec> nodes(nv);
-        for (size_t i = 0; i < nv; ++i)
-            nodes[i] = ZVec::from_twice(raw[i][0] * f, raw[i][1] * f, raw[i][2] * f);
-        return nodes;
-    };
-    auto bad_strut = [&](const std::vector<ZVec>& nodes) -> long {
-        for (size_t e = 0; e < ne; ++e)
-            if (vector_id_of(nodes[model.struts[e][1]] - nodes[model.struts[e][0]]) < 0)
-                return static_cast<long>(e);
-        return -1;
-    };
+    // Scale: the φ-power at which every strut is a Zome vector, vZome's own (m = 2) first.
     static constexpr int kPowers[] = {2, 3, 1, 4, 0, 5, -1, 6, -2, 7, -3, 8};
-    long first_bad = -1;
     int chosen = -1000;
-    try
+    bool moved = false;
+    long first_bad = 0;
+    for (int m : kPowers)
     {
-        for (int m : kPowers)
+        try
         {
-            std::vector<ZVec> nodes = scaled(m);
-            const long bad = bad_strut(nodes);
+            const long bad = place_at(m, raw, model, moved);
             if (bad < 0)
             {
-                model.nodes = std::move(nodes);
                 chosen = m;
                 break;
             }
             if (m == 2)
                 first_bad = bad;
         }
-    }
-    catch (const OverflowError&)
-    {
-        fail("coordinates are too large");
+        catch (const OverflowError&)
+        {
+            if (m == 2)
+                fail("coordinates are too large");
+        }
     }
     if (chosen == -1000)
     {
@@ -209,7 +294,7 @@ ZomeModel read_vef(std::string_view text, VefReadInfo* info)
     }
     check_model(model);
     if (info)
-        *info = VefReadInfo{chosen, static_cast<int>(std::clamp<int64_t>(version, 0, 1'000'000)), balls};
+        *info = VefReadInfo{chosen, static_cast<int>(std::clamp<int64_t>(version, 0, 1'000'000)), balls, moved};
     return model;
 }
 
@@ -218,7 +303,7 @@ ZomeModel read_vef_file(const std::string& path, VefReadInfo* info)
     return read_vef(read_file_bytes(path), info);
 }
 
-std::string write_vef(const ZomeModel& model)
+std::string write_vef(const ZomeModel& model, const VefWriteOptions& options)
 {
     // vZome's raw scale: raw = (twice our coordinate) · φ².
     const QPhi phi2 = phi_power(2);
@@ -235,8 +320,9 @@ std::string write_vef(const ZomeModel& model)
     out << "\n" << model.struts.size() << "\n";
     for (const auto& s : model.struts)
         out << s[0] << " " << s[1] << "\n";
-    out << "\n" << model.faces.size() << "\n";
-    for (const auto& f : model.faces)
+    const size_t faces = options.faces ? model.faces.size() : 0;
+    out << "\n" << faces << "\n";
+    for (const auto& f : options.faces ? model.faces : std::vector<std::vector<uint32_t>>{})
     {
         out << f.size();
         for (uint32_t v : f)

@@ -79,45 +79,19 @@ FaceRecovery recover_faces(const ZomeModel& model, const std::vector<Dir>& norma
     std::vector<std::vector<uint32_t>> rotation;
     if (!sorted_rotations(model, normals, rotation, out.error)) return out;
 
-    // Darts u→v are numbered by (u, position of v in u's rotation).
-    std::vector<size_t> first(n + 1, 0);
-    for (size_t v = 0; v < n; ++v) first[v + 1] = first[v] + rotation[v].size();
-    auto index_in = [&](uint32_t at, uint32_t of) -> size_t {
-        const auto& r = rotation[at];
-        return static_cast<size_t>(std::find(r.begin(), r.end(), of) - r.begin());
-    };
-    std::vector<char> used(first[n], 0);
+    out.faces = trace_faces(rotation);
     size_t bad = 0, largest = 0;
-    for (uint32_t u = 0; u < n; ++u)
-        for (size_t k = 0; k < rotation[u].size(); ++k)
+    for (const auto& face : out.faces)
+    {
+        std::vector<uint32_t> sorted = face;
+        std::sort(sorted.begin(), sorted.end());
+        const bool repeats = std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+        if (face.size() < 3 || face.size() > 4 || repeats)
         {
-            if (used[first[u] + k]) continue;
-            std::vector<uint32_t> face;
-            uint32_t a = u;
-            size_t ak = k;
-            // The next dart after a→b is b→c with c just before a counter-clockwise around b:
-            // the face lies between b→c and b→a.
-            while (!used[first[a] + ak])
-            {
-                used[first[a] + ak] = 1;
-                face.push_back(a);
-                const uint32_t b = rotation[a][ak];
-                const auto& rb = rotation[b];
-                const size_t at = index_in(b, a);
-                ak = (at + rb.size() - 1) % rb.size();
-                a = b;
-                if (face.size() > n) break;
-            }
-            std::vector<uint32_t> sorted = face;
-            std::sort(sorted.begin(), sorted.end());
-            const bool repeats = std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
-            if (face.size() < 3 || face.size() > 4 || repeats)
-            {
-                ++bad;
-                largest = std::max(largest, face.size());
-            }
-            out.faces.push_back(std::move(face));
+            ++bad;
+            largest = std::max(largest, face.size());
         }
+    }
     if (bad > 0)
     {
         out.error = std::to_string(bad) + " of " + std::to_string(out.faces.size()) +
@@ -128,6 +102,43 @@ FaceRecovery recover_faces(const ZomeModel& model, const std::vector<Dir>& norma
     }
     out.ok = true;
     return out;
+}
+
+std::vector<std::vector<uint32_t>> trace_faces(const std::vector<std::vector<uint32_t>>& rotation)
+{
+    const size_t n = rotation.size();
+    // Darts u→v are numbered by (u, position of v in u's rotation).
+    std::vector<size_t> first(n + 1, 0);
+    for (size_t v = 0; v < n; ++v) first[v + 1] = first[v] + rotation[v].size();
+    auto index_in = [&](uint32_t at, uint32_t of) -> size_t {
+        const auto& r = rotation[at];
+        return static_cast<size_t>(std::find(r.begin(), r.end(), of) - r.begin());
+    };
+    std::vector<char> used(first[n], 0);
+    std::vector<std::vector<uint32_t>> faces;
+    for (uint32_t u = 0; u < n; ++u)
+        for (size_t k = 0; k < rotation[u].size(); ++k)
+        {
+            if (used[first[u] + k]) continue;
+            std::vector<uint32_t> face;
+            uint32_t a = u;
+            size_t ak = k;
+            // The next dart after a→b is b→c with c just before a counter-clockwise around b:
+            // the face lies between b→c and b→a.
+            while (ak < rotation[a].size() && !used[first[a] + ak])
+            {
+                used[first[a] + ak] = 1;
+                face.push_back(a);
+                const uint32_t b = rotation[a][ak];
+                const auto& rb = rotation[b];
+                const size_t at = index_in(b, a);
+                if (at == rb.size()) break; // a strut listed at one end only
+                ak = (at + rb.size() - 1) % rb.size();
+                a = b;
+            }
+            faces.push_back(std::move(face));
+        }
+    return faces;
 }
 
 std::vector<Dir> centroid_normals(const ZomeModel& model)

@@ -25,6 +25,12 @@ struct FaceRecovery
 //! normal at π(node). Ignores model.faces.
 FaceRecovery recover_faces(const ZomeModel& model, const std::vector<std::array<double, 3>>& normals);
 
+//! The faces of a rotation system: `rotation[v]` lists v's neighbours counter-clockwise seen
+//! from outside (every strut must appear at both ends). Every dart is used once; a face is
+//! traced from each unused dart in order of node, then position. Faces may have any length
+//! (a bad rotation gives long ones): callers check.
+std::vector<std::vector<uint32_t>> trace_faces(const std::vector<std::vector<uint32_t>>& rotation);
+
 //! Normals pointing away from the centroid of the nodes: good enough for star-shaped models.
 std::vector<std::array<double, 3>> centroid_normals(const ZomeModel& model);
 

@@ -51,9 +51,9 @@ TEST(BadModelInput, VefProblemsAreNamed)
               std::string::npos);
     EXPECT_NE(error_of(std::string(kHeader) + "1000 (0,0) (0,0) (0,0) (0,0)", "a.vef").find("larger than the file"),
               std::string::npos);
-    EXPECT_NE(error_of(std::string(kHeader) + "1 (0,0) (x,1) (0,0) (0,0) 0", "a.vef").find("not an integer"),
+    EXPECT_NE(error_of(std::string(kHeader) + "1 (0,0) (x,1) (0,0) (0,0) 0", "a.vef").find("not a number"),
               std::string::npos);
-    EXPECT_NE(error_of("vZome VEF 6 field rational 0 0", "a.vef").find("not supported"), std::string::npos);
+    EXPECT_NE(error_of("vZome VEF 6 field rootTwo 0 0", "a.vef").find("not the golden field"), std::string::npos);
     EXPECT_NE(error_of(std::string(kHeader) + "1 (0,0) (99999999999999,0) (0,0) (0,0) 0", "a.vef").find("too large"),
               std::string::npos);
 }

@@ -33,7 +33,7 @@ export function installApi(app, { ready, warmedUp, info }) {
     progress: () => app.lastProgress,
     summary: () => app.bridge.summary(),
     parts: () => app.bridge.parts(),
-    /** The page's address with the model in its fragment (#m=1.…). */
+    /** The page's address with the model in its fragment (#m=2.…). */
     shareLink: () => app.shareLink({ copy: false }),
     openLink: async (link) => {
       const result = await app.openLink(link);
@@ -41,7 +41,7 @@ export function installApi(app, { ready, warmedUp, info }) {
       return result;
     },
     /** {name, bytes: Uint8Array} of an export: .vef .glb .obj .mtl .zome.json .csv */
-    exportModel: (name) => app.bridge.exportModel(name),
+    exportModel: (name, options) => app.bridge.exportModel(name, options),
     lastError: () => app.lastError,
     /** Fractions of the canvas in each strut colour (a pixel check of the rendering). */
     colourCoverage: () => app.viewer.colourCoverage(),

@@ -147,7 +147,8 @@ export class CoreBridge {
   snapshot() { return this.request(Request.SNAPSHOT); }
   surface() { return this.request(Request.SURFACE); }
   parts() { return this.request(Request.PARTS); }
-  exportModel(name) { return this.request(Request.EXPORT, { name }); }
+  /** @param {{vefFaces?: boolean, objUnits?: 'mm'|'m'}} [options] the writers' options */
+  exportModel(name, options) { return this.request(Request.EXPORT, options ? { name, options } : { name }); }
   link() { return this.request(Request.LINK); }
   summary() { return this.request(Request.SUMMARY); }
 }

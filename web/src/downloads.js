@@ -1,11 +1,17 @@
 // Download buttons: each asks the worker for the export and saves it. OBJ comes with its MTL, as
-// one .zip (two downloads make Chrome ask to allow multiple downloads).
+// one .zip (two downloads make Chrome ask to allow multiple downloads). GLB is in metres, OBJ in
+// millimetres (its header says so); "VEF, no panels" leaves the faces out, so vZome shows balls
+// and struts only.
 import { exportFileName } from './file_names.js';
 import { zipStored } from './zip.js';
 
 export const FORMATS = {
-  vef: ['model.vef'], glb: ['model.glb'], obj: ['model.obj', 'model.mtl'], json: ['model.zome.json'], csv: ['parts.csv'],
+  vef: ['model.vef'], 'vef-struts': ['model.vef'], glb: ['model.glb'], obj: ['model.obj', 'model.mtl'],
+  json: ['model.zome.json'], csv: ['parts.csv'],
 };
+
+// The writers' options of a format (bridge.exportModel), when it has any.
+export const OPTIONS = { 'vef-struts': { vefFaces: false } };
 
 // Formats of several files, saved as one zip of this name.
 export const ZIPPED = { obj: 'model.zip' };
@@ -31,7 +37,7 @@ export class Downloads {
           const files = [];
           for (const file of FORMATS[format]) {
             const name = exportFileName(file, this.baseName());
-            files.push({ name, bytes: (await bridge.exportModel(name)).bytes });
+            files.push({ name, bytes: (await bridge.exportModel(name, OPTIONS[format])).bytes });
           }
           if (ZIPPED[format]) saveBytes(exportFileName(ZIPPED[format], this.baseName()), zipStored(files));
           else for (const f of files) saveBytes(f.name, f.bytes);

@@ -16,8 +16,8 @@ export const Request = Object.freeze({
   SNAPSHOT: 'snapshot',   // {}                              → Snapshot
   SURFACE: 'surface',     // {}                              → {positions, triangles} | null
   PARTS: 'parts',         // {}                              → parts report (see core/parts/parts_report.h)
-  EXPORT: 'export',       // {name}                          → {name, bytes: Uint8Array}
-  LINK: 'link',           // {}                              → {link: 'm=1.…'}
+  EXPORT: 'export',       // {name, options?: {vefFaces, objUnits}} → {name, bytes: Uint8Array}
+  LINK: 'link',           // {}                              → {link: 'm=2.…'}
   SUMMARY: 'summary',     // {}                              → Summary
   WARM_UP: 'warmUp',      // {}                              → {ms}  (a short hidden run; see core_worker.js)
 });

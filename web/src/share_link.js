@@ -1,4 +1,4 @@
-// Share links: the model in the URL fragment (#m=1.…), never sent to a server.
+// Share links: the model in the URL fragment (#m=2.…; m=1.… still opens), never sent to a server.
 export function linkFromLocation() {
   return linkFromHash(window.location.hash);
 }

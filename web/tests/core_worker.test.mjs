@@ -95,6 +95,13 @@ test('export: bytes come back (transferred); an unknown format is a clear error'
   await assert.rejects(bridge.exportModel('torus.xyz'), { message: "unknown export format '.xyz'" });
 });
 
+test('export with options: VEF without faces, OBJ in metres reach the core', async () => {
+  const plain = await bridge.exportModel('torus.vef', { vefFaces: false });
+  assert.deepEqual(Array.from(plain.bytes), [1, 2, 3, 0, 0]);
+  const metres = await bridge.exportModel('torus.obj', { objUnits: 'm' });
+  assert.deepEqual(Array.from(metres.bytes), [1, 2, 3, 1, 1]);
+});
+
 test('snapshot: the reply hands over all four typed-array buffers', async () => {
   const s = await bridge.snapshot();
   assert.equal(posted.at(-1).transfer.length, 4);

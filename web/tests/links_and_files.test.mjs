@@ -51,7 +51,8 @@ test('the model\'s name drops the loaded file\'s extension (any case), and is ne
 
 test('download names: every format from its template; a base with "parts", "model" or "$&" is literal', () => {
   const names = Object.values(FORMATS).flat().map((t) => exportFileName(t, 'torus'));
-  assert.deepEqual(names, ['torus.vef', 'torus.glb', 'torus.obj', 'torus.mtl', 'torus.zome.json', 'torus-parts.csv']);
+  assert.deepEqual(names, ['torus.vef', 'torus.vef', 'torus.glb', 'torus.obj', 'torus.mtl', 'torus.zome.json',
+    'torus-parts.csv']);
   // Before file_names.js, 'model.vef' became 'parts-parts.vef' for a model named "parts".
   assert.equal(exportFileName('model.vef', 'parts'), 'parts.vef');
   assert.equal(exportFileName('parts.csv', 'bodyparts'), 'bodyparts-parts.csv');

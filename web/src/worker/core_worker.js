@@ -174,8 +174,10 @@ const handlers = {
     return s ? [s, [s.positions.buffer, s.triangles.buffer]] : null;
   },
   [Request.PARTS]: () => parse(session.parts()),
-  [Request.EXPORT]: ({ name }) => {
-    const out = session.exportModel(name);
+  [Request.EXPORT]: ({ name, options }) => {
+    const out = options
+      ? session.exportModelWith(name, options.vefFaces !== false, options.objUnits ?? 'mm')
+      : session.exportModel(name);
     if (!out.ok) throw new Error(out.error);
     return [{ name, bytes: out.bytes }, [out.bytes.buffer]];
   },
