@@ -80,7 +80,9 @@ FoldRepairStats repair_fold_overs(AnnealerState& s)
             if (propose(kind, s.mesh, seed, rng, claims, proposal))
             {
                 EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change);
-                if (delta.ok() && !delta.adds_fold_over)
+                // A move may trade a fold-over for another one nearby (walking it to where it can
+                // go) but never raise their number.
+                if (delta.ok() && delta.sums.fold_overs <= 0)
                 {
                     s.energy.add_surface_change(s.mesh, proposal.change, delta, surface);
                     const double de = s.energy.delta_energy(delta);
