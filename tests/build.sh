@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Configures and builds the named flavours:
 #   native  build/native     Release, warnings as errors (tests, CLI, benchmarks)
-#   wasm    build/wasm       the same core, tests, CLI and benchmarks with Emscripten (pthreads), run under node
+#   wasm    build/wasm       the same core, tests and CLI with Emscripten (pthreads), run under node; its benchmarks
+#                            are built by `npm run bench` when it needs them (each wasm link costs ~30 s)
 #   asan    build/asan       clang -O2 -g, AddressSanitizer + UndefinedBehaviorSanitizer + libFuzzer coverage:
 #                            the whole test suite and the libFuzzer targets of tests/fuzz from one compile
 #   tsan    build/tsan-lane  clang -O2 -g with ThreadSanitizer; only the test binary (the lane runs `ctest -L parallel`)
@@ -16,7 +17,8 @@ for flavour in "$@"; do
   dir="build/$flavour"; targets=()
   case "$flavour" in
     native) cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON >/dev/null ;;
-    wasm)   emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON >/dev/null ;;
+    wasm)   targets=(zome_tests zomeify)
+            emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON >/dev/null ;;
     asan|fuzz)
             dir=build/asan
             [ "$flavour" = fuzz ] && targets=("${fuzz_targets[@]}")
