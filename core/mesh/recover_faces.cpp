@@ -1,4 +1,5 @@
 #include "core/mesh/recover_faces.h"
+#include "core/mesh/dir3.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,19 +8,7 @@
 namespace zomeify {
 namespace {
 
-using Dir = std::array<double, 3>;
-
-Dir sub(const Dir& a, const Dir& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-double dot(const Dir& a, const Dir& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Dir cross(const Dir& a, const Dir& b)
-{
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Dir unit(const Dir& a)
-{
-    const double n = std::sqrt(dot(a, a));
-    return n > 0 ? Dir{a[0] / n, a[1] / n, a[2] / n} : Dir{0, 0, 0};
-}
+using namespace dir3;
 
 //! Neighbours of every node sorted counter-clockwise around its normal.
 bool sorted_rotations(const ZomeModel& model, const std::vector<Dir>& normals,

@@ -1,4 +1,5 @@
 #include "core/mesh/strut_rotation.h"
+#include "core/mesh/dir3.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,21 +10,7 @@ namespace zomeify {
 
 namespace {
 
-using Dir = std::array<double, 3>;
-
-Dir sub(const Dir& a, const Dir& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-Dir add(const Dir& a, const Dir& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-Dir neg(const Dir& a) { return {-a[0], -a[1], -a[2]}; }
-double dot(const Dir& a, const Dir& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-Dir cross(const Dir& a, const Dir& b)
-{
-    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Dir unit(const Dir& a)
-{
-    const double n = std::sqrt(dot(a, a));
-    return n > 0 ? Dir{a[0] / n, a[1] / n, a[2] / n} : Dir{0, 0, 0};
-}
+using namespace dir3;
 
 using Mat3 = std::array<Dir, 3>;
 
