@@ -19,16 +19,27 @@
 
 using namespace zomeify;
 
+namespace
+{
+
+// Reads a GLB back with tinygltf (an independent reader).
+::testing::AssertionResult load_glb(const std::string& glb, tinygltf::Model& m)
+{
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    if (loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(glb.data()),
+                                    static_cast<unsigned int>(glb.size())))
+        return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << err;
+}
+
+} // namespace
+
 TEST(Export, GlbOfTheBunnyLoadsBackWithOneMeshPerKind)
 {
     const ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
-    const std::string glb = write_glb(bunny);
     tinygltf::Model m;
-    tinygltf::TinyGLTF loader;
-    std::string err, warn;
-    ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(glb.data()),
-                                            static_cast<unsigned int>(glb.size())))
-        << err;
+    ASSERT_TRUE(load_glb(write_glb(bunny), m));
     ASSERT_EQ(m.meshes.size(), 10u); // the ball and the nine strut kinds
     std::map<std::string, size_t> instances;
     for (const auto& node : m.nodes)
@@ -54,13 +65,8 @@ TEST(Export, GlbOfTheBunnyLoadsBackWithOneMeshPerKind)
 TEST(Export, GlbIsInMetresOnTheTableWithNamedNodes)
 {
     const ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
-    const std::string glb = write_glb(bunny);
     tinygltf::Model m;
-    tinygltf::TinyGLTF loader;
-    std::string err, warn;
-    ASSERT_TRUE(loader.LoadBinaryFromMemory(&m, &err, &warn, reinterpret_cast<const unsigned char*>(glb.data()),
-                                            static_cast<unsigned int>(glb.size())))
-        << err;
+    ASSERT_TRUE(load_glb(write_glb(bunny), m));
     EXPECT_TRUE(m.nodes[0].scale.empty()); // no scaled root: the geometry itself is in metres
     std::array<double, 3> lo{1e9, 1e9, 1e9}, hi{-1e9, -1e9, -1e9};
     std::set<std::string> names;
