@@ -20,16 +20,15 @@ int cmd_steps(const CommandArgs& argv)
     args.expect_positional(1, "one model file: zomeify steps MODEL [--json] [-o steps.html] [--up AXIS]");
     PlanOptions options;
     options.up = parse_up_axis(args.value("--up").value_or("y"));
+    for (const std::string& out : args.values("-o"))
+        if (std::filesystem::path(out).extension() != ".html")
+            throw InvalidInputError("steps writes .html pages with -o, not '" + out + "'");
     const std::string& path = args.positional()[0];
     const ZomeModel model = read_model_warning_of_clashes(path);
     const BuildPlan plan = plan_assembly(model, options);
     const PlanFigures naive = plan_breadth_first(model, options).figures;
     for (const std::string& out : args.values("-o"))
-    {
-        if (std::filesystem::path(out).extension() != ".html")
-            throw InvalidInputError("steps writes .html pages with -o, not '" + out + "'");
         write_file_bytes(out, steps_html(model, plan, std::filesystem::path(path).filename().string()));
-    }
     std::cout << (args.has("--json") ? plan_json(model, plan, naive) : plan_text(model, plan, naive));
     return 0;
 }

@@ -101,6 +101,25 @@ if node -e '
   const ok = a.radius_b0 === 0 && a.samples === 0 && f.radius_b0 === 2.5 && f.samples > 500 && f.uncovered_at_end <= f.samples;
   process.exit(ok ? 0 : 1);' "$tmp/h.json" "$tmp/f.json"; then ok; else bad "run --coverage-radius not applied or not reported"; fi
 
+# steps: the assembly sequence. The JSON's steps hold every ball and strut once; the page is one file.
+expect_output "steps text"  '^step 1: .* on the table$' steps "$bunny"
+expect_output "steps figures" '^Largest overhang [0-9.]+ mm; .*breadth-first order: [0-9]+ steps' steps "$bunny"
+if "${cli[@]}" steps "$bunny" --json -o "$tmp/steps.html" >"$tmp/steps.json" 2>/dev/null && node -e '
+  const p = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const balls = p.steps.flatMap(s => s.balls), struts = p.steps.flatMap(s => s.struts);
+  const ok = p.nodes.length === 392 && p.nodes.every(n => n.length === 6 && n.every(Number.isInteger))
+    && new Set(balls).size === 392 && balls.length === 392 && struts.length === 968
+    && new Set(struts.map(([a, b]) => Math.min(a, b) + "," + Math.max(a, b))).size === 968
+    && p.figures.steps === p.steps.length && p.figures.two_strut_share >= 0 && p.naive.steps > 0;
+  process.exit(ok ? 0 : 1);' "$tmp/steps.json"; then ok; else bad "steps --json: not every part once"; fi
+steps=$(grep -c '^{"balls"' "$tmp/steps.json")
+if grep -q "Step $steps of $steps" "$tmp/steps.html" && ! grep -Eo '(https?:)?//[^"]*' "$tmp/steps.html" | grep -vq '^http://www.w3.org/2000/svg$'; then ok
+else bad "steps html: last step missing or a network address"; fi
+printf '{"format":"zomeify-model","version":1,"nodes":[[0,0,0,0,0,0],[0,4,0,0,0,0]],"struts":[]}' > "$tmp/apart.zome.json"
+expect_error "steps apart"   'not one piece'          steps "$tmp/apart.zome.json"
+expect_error "steps bad up"  'up axis must be x, y or z' steps "$bunny" --up w
+expect_error "steps bad out" 'writes .html pages'      steps "$bunny" -o "$tmp/steps.pdf"
+
 printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/nonzome.vef"
 head -c 700 "$bunny" > "$tmp/truncated.vef"
 printf 'vZome VEF 6 field golden 999999999999 (0,0)' > "$tmp/absurd.vef"

@@ -147,6 +147,7 @@ export class CoreBridge {
   snapshot() { return this.request(Request.SNAPSHOT); }
   surface() { return this.request(Request.SURFACE); }
   parts() { return this.request(Request.PARTS); }
+  buildPlan(up = 'y') { return this.request(Request.BUILD_PLAN, { up }); }
   exportModel(name) { return this.request(Request.EXPORT, { name }); }
   link() { return this.request(Request.LINK); }
   summary() { return this.request(Request.SUMMARY); }

@@ -174,6 +174,7 @@ const handlers = {
     return s ? [s, [s.positions.buffer, s.triangles.buffer]] : null;
   },
   [Request.PARTS]: () => parse(session.parts()),
+  [Request.BUILD_PLAN]: ({ up }) => parse(session.buildPlan(up || 'y')),
   [Request.EXPORT]: ({ name }) => {
     const out = session.exportModel(name);
     if (!out.ok) throw new Error(out.error);
