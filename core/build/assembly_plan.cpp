@@ -260,6 +260,11 @@ PlanFigures plan_figures(const ZomeModel& model, const std::vector<BuildStep>& s
         bool braced = true;
         for (uint32_t v : steps[s].balls)
             braced = braced && held[v] >= 2;
+        // Dangling balls: a strut joined one of them since, so count over all balls built so far.
+        size_t dangling = 0;
+        for (size_t v = 0; v < held.size(); ++v)
+            dangling += step_of[v] >= 0 && step_of[v] <= static_cast<int>(s) && held[v] == 1;
+        f.max_dangling = std::max(f.max_dangling, dangling);
         braced_steps += braced;
     }
     // Overhang: a ball's support is the highest lower ball a strut joins it to by the end of its step.

@@ -36,6 +36,7 @@ struct PlanFigures
     size_t steps = 0;
     double max_overhang_b0 = 0; //!< largest height of a new ball above its highest supporting ball below it
     double two_strut_share = 0; //!< share of steps after which every new ball has >= 2 struts
+    size_t max_dangling = 0;    //!< most balls held by a single strut after any step (they swing)
 };
 
 struct BuildPlan

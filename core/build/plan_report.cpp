@@ -21,7 +21,7 @@ void figures_json(std::ostream& os, const PlanFigures& f)
 {
     os << "{\"steps\":" << f.steps << ",\"max_overhang_b0\":" << number(f.max_overhang_b0)
        << ",\"max_overhang_mm\":" << number(f.max_overhang_b0 * kMmPerB0)
-       << ",\"two_strut_share\":" << number(f.two_strut_share) << "}";
+       << ",\"two_strut_share\":" << number(f.two_strut_share) << ",\"max_dangling\":" << f.max_dangling << "}";
 }
 
 } // namespace
@@ -129,8 +129,9 @@ std::string plan_text(const ZomeModel& model, const BuildPlan& plan, const PlanF
     }
     const double mm = kMmPerB0;
     os << "Largest overhang " << number(plan.figures.max_overhang_b0 * mm) << " mm; steps ending with every new ball on two struts: "
-       << number(100 * plan.figures.two_strut_share) << "% (breadth-first order: " << naive.steps << " steps, "
-       << number(naive.max_overhang_b0 * mm) << " mm, " << number(100 * naive.two_strut_share) << "%).\n";
+       << number(100 * plan.figures.two_strut_share) << "%; most balls on one strut at once: " << plan.figures.max_dangling
+       << " (breadth-first order: " << naive.steps << " steps, " << number(naive.max_overhang_b0 * mm) << " mm, "
+       << number(100 * naive.two_strut_share) << "%, " << naive.max_dangling << ").\n";
     return os.str();
 }
 

@@ -18,7 +18,8 @@
 namespace zomeify {
 namespace {
 
-//! A square pyramid of b1-ish blue struts: four base balls, an apex, eight struts.
+//! A square of B0 struts with one diagonal (the planner reads the graph only; the diagonal is no
+//! Zome strut, which plan_json would refuse).
 ZomeModel tiny_model()
 {
     ZomeModel m;
