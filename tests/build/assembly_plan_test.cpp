@@ -43,7 +43,13 @@ TEST(AssemblyPlan, TinyModelIsPlannedWholeAndInOrder)
     const ZomeModel m = tiny_model();
     const BuildPlan plan = plan_assembly(m);
     expect_valid(m, plan, "tiny");
-    EXPECT_EQ(plan.steps.size(), 1u); // 4 balls + 5 struts fit one step of at most 12 parts
+    // The triangle 0-1-2 (6 parts) closes the first step; ball 3 comes with its two struts.
+    ASSERT_EQ(plan.steps.size(), 2u);
+    EXPECT_EQ(plan.steps[0].balls, (std::vector<uint32_t>{0, 1, 2}));
+    EXPECT_EQ(plan.steps[1].balls, (std::vector<uint32_t>{3}));
+    EXPECT_EQ(plan.steps[1].attach, (std::vector<uint32_t>{0, 2}));
+    EXPECT_EQ(plan.figures.two_strut_share, 1.0);
+    EXPECT_EQ(plan.figures.max_dangling, 0u); // ball 1 hangs on one strut only within step 1
 }
 
 TEST(AssemblyPlan, BadModelsGiveOneLineErrors)
