@@ -93,22 +93,23 @@ void step_svg(std::ostream& os, const ZomeModel& model, const std::vector<StrutK
 {
     os << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << kPanel << "\" height=\"" << kPanel
        << "\" viewBox=\"0 0 " << kPanel << " " << kPanel << "\">";
-    // Painter's order: the parts still to come, what stands, then this step on top.
-    for (int pass = 0; pass < 3; ++pass)
-        for (size_t i = 0; i < model.struts.size(); ++i)
-        {
-            const int t = strut_step[i];
-            const int want = t > s ? 0 : t < s ? 1 : 2;
-            if (want != pass)
-                continue;
-            const auto [a, b] = model.struts[i];
-            if (pass == 0)
-                line(os, p[a], p[b], "#eeeeee", 1);
-            else if (pass == 1)
-                line(os, p[a], p[b], "#8a8a8a", 1.5);
-            else
-                line(os, p[a], p[b], strut_colour(kinds[i]), 4);
-        }
+    // Painter's order: the parts still to come, what stands (one path each, to keep the page
+    // small), then this step's struts on top, each in its colour.
+    std::string later, built;
+    for (size_t i = 0; i < model.struts.size(); ++i)
+    {
+        const auto [a, b] = model.struts[i];
+        if (strut_step[i] == s)
+            continue;
+        std::string& d = strut_step[i] > s ? later : built;
+        d.append("M").append(fixed(p[a][0])).append(" ").append(fixed(p[a][1]));
+        d.append("L").append(fixed(p[b][0])).append(" ").append(fixed(p[b][1]));
+    }
+    os << "<path d=\"" << later << "\" stroke=\"#e6e6e6\" stroke-width=\"1\" fill=\"none\"/>";
+    os << "<path d=\"" << built << "\" stroke=\"#8a8a8a\" stroke-width=\"1.5\" fill=\"none\"/>";
+    for (size_t i = 0; i < model.struts.size(); ++i)
+        if (strut_step[i] == s)
+            line(os, p[model.struts[i][0]], p[model.struts[i][1]], strut_colour(kinds[i]), 4);
     for (size_t v = 0; v < model.nodes.size(); ++v)
         if (ball_step[v] == s)
             os << "<circle cx=\"" << fixed(p[v][0]) << "\" cy=\"" << fixed(p[v][1])
