@@ -18,7 +18,7 @@ const std::vector<Command>& commands()
         {"link", "link MODEL | link --decode FRAGMENT -o OUT   share-link fragment of a model, and back", cmd_link},
         {"steps", "steps MODEL [--json] [-o steps.html] [--up AXIS]  assembly sequence: steps of a few parts, from the table up", cmd_steps},
         {"score", "score MODEL --mesh MESH [--b0 L] [--json]  energy, fold-overs and distance of a model against a mesh", cmd_score},
-        {"run", "run MESH -o OUT [-o OUT2 ...] [--resolution N | --b1 L] [--target-nodes N] [--seconds S | --proposals N]\n"
+        {"run", "run MESH -o OUT [-o OUT2 ...] [--resolution N | --b1 L | --size-cm CM] [--target-nodes N] [--seconds S | --proposals N]\n"
                 "          [--threads T] [--seed K] [--t0 T | --t0-factor F] [--t-min T | --t-min-ratio R]\n"
                 "          [--operator-weights I,A,S,R,F,M,N] [--coverage-radius B0S] [--initial-only] [--stats STATS.json]   Z0, then annealing",
          cmd_run},

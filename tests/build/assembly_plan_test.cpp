@@ -7,6 +7,7 @@
 #include "core/base/errors.h"
 #include "core/build/assembly_plan.h"
 #include "core/build/plan_report.h"
+#include "core/build/real_size.h"
 #include "core/build/steps_html.h"
 #include "core/io/model_io.h"
 #include "core/pipeline/pipeline.h"
@@ -117,6 +118,17 @@ TEST(AssemblyPlan, SharedMeshesInitialModels)
         expect_valid(m, plan_assembly(m), name);
         expect_valid(m, plan_breadth_first(m), std::string(name) + " naive");
     }
+}
+
+TEST(RealSize, SizeToScaleAndBack)
+{
+    // 50 cm over a mesh 10 units long: (500 - 17.673) mm / 74.86 mm = 6.44 b1 spans, less the cell Z0 adds.
+    const double b1 = b1_for_size_cm(10.0, 50.0);
+    EXPECT_NEAR(10.0 / b1, (500.0 - 17.673) / 74.862 - 1.0, 1e-3);
+    EXPECT_NEAR(built_size_cm(0.0), 1.7673, 1e-4);
+    EXPECT_THROW(b1_for_size_cm(10.0, 5.0), InvalidInputError);
+    EXPECT_THROW(b1_for_size_cm(0.0, 50.0), InvalidInputError);
+    EXPECT_THROW(b1_for_size_cm(10.0, 1e9), InvalidInputError);
 }
 
 } // namespace

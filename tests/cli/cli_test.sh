@@ -72,7 +72,7 @@ expect_error "run res 1"        'automatic \(0\) or from 2 to 256' run "$mesh" -
 expect_error "run res 300"      '--resolution.*256'      run "$mesh" --resolution 300 -o "$tmp/x.zome.json"
 expect_error "run bad format"   'unknown model format'   run "$mesh" -o "$tmp/x.stl"
 expect_error "run no -o"        'missing -o'             run "$mesh"
-expect_error "run both scales"  'not both'               run "$mesh" --resolution 8 --b1 0.2 -o "$tmp/x.zome.json"
+expect_error "run both scales" 'one of --resolution, --b1 and --size-cm'               run "$mesh" --resolution 8 --b1 0.2 -o "$tmp/x.zome.json"
 expect_error "run bad seconds"  'seconds'                run "$mesh" --seconds -1 -o "$tmp/x.zome.json"
 expect_error "run bad threads"  'threads'                run "$mesh" --threads 1000 -o "$tmp/x.zome.json"
 expect_output "run paper draw"  'on 1 thread: .*genus 0' run "$mesh" --resolution 8 --proposals 20000 --threads 1 --operator-weights 1,1,1,1,1,1,1 -o "$tmp/d.zome.json"
@@ -115,6 +115,12 @@ if "${cli[@]}" steps "$bunny" --json -o "$tmp/steps.html" >"$tmp/steps.json" 2>/
 steps=$(grep -c '^{"balls"' "$tmp/steps.json")
 if grep -q "Step $steps of $steps" "$tmp/steps.html" && ! grep -Eo '(https?:)?//[^"]*' "$tmp/steps.html" | grep -vq '^http://www.w3.org/2000/svg$'; then ok
 else bad "steps html: last step missing or a network address"; fi
+# --size-cm: the built model's longest side within one B1 strut (7.5 cm) of the size asked.
+out=$("${cli[@]}" run "$shared/data/meshes/bunny.obj" --size-cm 50 --proposals 20000 --threads 1 -o "$tmp/s.zome.json" 2>/dev/null)
+longest=$(sed -n 's/^Built size \([0-9.]*\) x \([0-9.]*\) x \([0-9.]*\) cm.*/\1\n\2\n\3/p' <<<"$out" | sort -n | tail -1)
+if [ -n "$longest" ] && awk -v x="$longest" 'BEGIN { exit !(x > 42.5 && x < 57.5) }'; then ok; else bad "run --size-cm 50: longest side '$longest'"; fi
+expect_error "size too small" '--size-cm must be between' run "$shared/data/meshes/bunny.obj" --size-cm 5 -o "$tmp/x.zome.json"
+expect_error "size and res"   'one of --resolution, --b1 and --size-cm' run "$shared/data/meshes/bunny.obj" --size-cm 50 --resolution 8 -o "$tmp/x.zome.json"
 printf '{"format":"zomeify-model","version":1,"nodes":[[0,0,0,0,0,0],[0,4,0,0,0,0]],"struts":[]}' > "$tmp/apart.zome.json"
 expect_error "steps apart"   'not one piece'          steps "$tmp/apart.zome.json"
 expect_error "steps bad up"  'up axis must be x, y or z' steps "$bunny" --up w
