@@ -55,6 +55,8 @@ test('build view: every step, a highlighted middle step, the print view', async 
 
   // Closing the view restores the model's colours.
   await page.click('#build-toggle');
+  await expect(page.locator('#build-panel')).toBeHidden();
+  await page.mouse.move(5, 5); // off the parts rows, whose hover highlights too
   await expect.poll(async () => (await coverage(page)).highlight).toBeLessThan(0.0003);
 });
 
