@@ -37,13 +37,27 @@ Adjacency adjacency(const ZomeModel& model)
         adj[a].push_back({b, s});
         adj[b].push_back({a, s});
     }
+    // Neighbours in the order of their exact positions, so that the plan depends on the shape alone,
+    // not on how a file or a share link numbers the balls.
+    for (auto& links : adj)
+        std::sort(links.begin(), links.end(),
+                  [&](const Link& x, const Link& y) { return model.nodes[x.ball].c < model.nodes[y.ball].c; });
     return adj;
 }
 
-uint32_t lowest_ball(const std::vector<double>& h)
+//! Whether ball a comes before ball b among equals: by exact position, never by index.
+bool before(const ZomeModel& model, uint32_t a, uint32_t b)
 {
-    // Ties go to the smaller index, so the plan depends on the model only.
-    return static_cast<uint32_t>(std::min_element(h.begin(), h.end()) - h.begin());
+    return model.nodes[a].c < model.nodes[b].c;
+}
+
+uint32_t lowest_ball(const ZomeModel& model, const std::vector<double>& h)
+{
+    uint32_t best = 0;
+    for (uint32_t v = 1; v < h.size(); ++v)
+        if (h[v] < h[best] || (h[v] == h[best] && before(model, v, best)))
+            best = v;
+    return best;
 }
 
 //! Cuts a sequence of ball placements into steps and records struts and attachments.
@@ -175,7 +189,7 @@ BuildPlan plan_assembly(const ZomeModel& model, const PlanOptions& options)
         for (const Link& l : adj[v])
             ++held[l.ball];
     };
-    place(lowest_ball(h));
+    place(lowest_ball(model, h));
     size_t placed = 1;
     while (placed < adj.size())
     {
@@ -193,7 +207,8 @@ BuildPlan plan_assembly(const ZomeModel& model, const PlanOptions& options)
                 braces = braces || cut.is_weak(l.ball);
             const int k = std::min(held[v], 4);
             const double score = h[v] - 2.0 * k + (k < 2 ? 3.0 : 0.0) - (braces ? 2.0 : 0.0);
-            if (score < best_score)
+            // Equal heights give equal scores exactly (same coordinates, same arithmetic).
+            if (score < best_score || (score == best_score && before(model, v, best)))
             {
                 best_score = score;
                 best = v;
@@ -218,7 +233,7 @@ BuildPlan plan_breadth_first(const ZomeModel& model, const PlanOptions& options)
     const Adjacency adj = adjacency(model);
     StepCutter cut(adj, options);
     std::vector<char> seen(adj.size(), 0);
-    const uint32_t start = lowest_ball(ball_heights(model, options.up));
+    const uint32_t start = lowest_ball(model, ball_heights(model, options.up));
     std::deque<uint32_t> queue{start};
     seen[start] = 1;
     size_t placed = 0;

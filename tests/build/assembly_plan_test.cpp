@@ -87,6 +87,18 @@ TEST(AssemblyPlan, PaperBunnyBothOrders)
     EXPECT_EQ(plan_json(m, plan, plan.figures), plan_json(m, plan_assembly(m), plan.figures)); // deterministic
     for (const BuildStep& s : plan.steps)
         EXPECT_LE(s.balls.size() + s.struts.size(), 14u);
+    // Renumbered balls and turned struts (as a share link may give) make the same steps in positions.
+    ZomeModel renumbered = m;
+    const size_t n = m.nodes.size();
+    for (size_t i = 0; i < n; ++i)
+        renumbered.nodes[i] = m.nodes[n - 1 - i];
+    for (auto& st : renumbered.struts)
+        st = {static_cast<uint32_t>(n - 1 - st[1]), static_cast<uint32_t>(n - 1 - st[0])};
+    const BuildPlan again = plan_assembly(renumbered);
+    ASSERT_EQ(again.steps.size(), plan.steps.size());
+    for (size_t s = 0; s < plan.steps.size(); ++s)
+        for (size_t i = 0; i < plan.steps[s].balls.size(); ++i)
+            EXPECT_EQ(renumbered.nodes.at(again.steps[s].balls.at(i)), m.nodes[plan.steps[s].balls[i]]);
     // Another pose is another plan, still whole.
     PlanOptions side;
     side.up = parse_up_axis("-x");
