@@ -44,13 +44,14 @@ TEST(AssemblyPlan, TinyModelIsPlannedWholeAndInOrder)
     const ZomeModel m = tiny_model();
     const BuildPlan plan = plan_assembly(m);
     expect_valid(m, plan, "tiny");
-    // The triangle 0-1-2 (6 parts) closes the first step; ball 3 comes with its two struts.
+    // Equal heights go by exact position: ball 3 (+z) before ball 1 (+x). The triangle 0-3-2 (6 parts)
+    // closes the first step; ball 1 comes with its two struts.
     ASSERT_EQ(plan.steps.size(), 2u);
-    EXPECT_EQ(plan.steps[0].balls, (std::vector<uint32_t>{0, 1, 2}));
-    EXPECT_EQ(plan.steps[1].balls, (std::vector<uint32_t>{3}));
+    EXPECT_EQ(plan.steps[0].balls, (std::vector<uint32_t>{0, 3, 2}));
+    EXPECT_EQ(plan.steps[1].balls, (std::vector<uint32_t>{1}));
     EXPECT_EQ(plan.steps[1].attach, (std::vector<uint32_t>{0, 2}));
     EXPECT_EQ(plan.figures.two_strut_share, 1.0);
-    EXPECT_EQ(plan.figures.max_dangling, 0u); // ball 1 hangs on one strut only within step 1
+    EXPECT_EQ(plan.figures.max_dangling, 0u); // ball 3 hangs on one strut only within step 1
 }
 
 TEST(AssemblyPlan, BadModelsGiveOneLineErrors)
