@@ -40,7 +40,8 @@ test('build view: every step, a highlighted middle step, the print view', async 
   // A middle step: its struts glow green, the built ones keep their colours.
   const mid = Math.floor(steps / 2);
   await page.evaluate((k) => window.zomeify.buildStep(k), mid);
-  await expect.poll(async () => (await coverage(page)).highlight).toBeGreaterThan(0.0003);
+  // A step of a few struts may sit behind others: some tens of green pixels are enough.
+  await expect.poll(async () => (await coverage(page)).highlight).toBeGreaterThan(0.00004);
   const c = await coverage(page);
   expect(c.blue + c.yellow + c.red, JSON.stringify(c)).toBeGreaterThan(0.001);
   await page.locator('#viewer').screenshot({ path: path.join(OUT, 'build-step.png') });
@@ -57,7 +58,7 @@ test('build view: every step, a highlighted middle step, the print view', async 
   await page.click('#build-toggle');
   await expect(page.locator('#build-panel')).toBeHidden();
   await page.mouse.move(5, 5); // off the parts rows, whose hover highlights too
-  await expect.poll(async () => (await coverage(page)).highlight).toBeLessThan(0.0003);
+  await expect.poll(async () => (await coverage(page)).highlight).toBeLessThan(c.highlight / 4);
 });
 
 test('the steps page of the CLI opens with no network request', async ({ page }) => {
