@@ -48,6 +48,7 @@ public:
     std::string progress() const { return s_.progress().json(); }
     double model_version() const { return static_cast<double>(s_.model_version()); }
     std::string parts() const { return s_.parts(); }
+    std::string build_plan(const std::string &up) const { return s_.build_plan(up); }
     std::string link() const { return s_.link(); }
     std::string summary() const { return s_.summary(); }
 
@@ -171,6 +172,7 @@ EMSCRIPTEN_BINDINGS(zomeify_web)
         .function("snapshot", &WebSession::snapshot)
         .function("surface", &WebSession::surface)
         .function("parts", &WebSession::parts)
+        .function("buildPlan", &WebSession::build_plan)
         .function("exportModel", &WebSession::export_model)
         .function("exportModelWith", &WebSession::export_model_with)
         .function("link", &WebSession::link)

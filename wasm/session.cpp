@@ -7,6 +7,9 @@
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
+#include "core/build/assembly_plan.h"
+#include "core/build/plan_report.h"
+#include "core/build/steps_html.h"
 #include "core/geom/closest_point.h"
 #include "core/geom/inside.h"
 #include "core/io/model_io.h"
@@ -486,6 +489,23 @@ std::string Session::parts() const
             if (m.nodes.empty())
                 throw InvalidInputError("no model yet");
             return parts_report_json(parts_list(m), {});
+        });
+}
+
+std::string Session::build_plan(const std::string &up) const
+{
+    return guarded(
+        [&]
+        {
+            const ZomeModel m = model();
+            if (m.nodes.empty())
+                throw InvalidInputError("no model yet");
+            PlanOptions options;
+            options.up = parse_up_axis(up);
+            const BuildPlan plan = plan_assembly(m, options);
+            nlohmann::json out = nlohmann::json::parse(plan_json(m, plan, plan_breadth_first(m, options).figures));
+            out["html"] = steps_html(m, plan, surface_name_.empty() ? "model" : surface_name_);
+            return out.dump();
         });
 }
 

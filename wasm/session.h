@@ -68,6 +68,10 @@ public:
 
     //! The parts list and kit plan of the current model (parts_report_json) or {ok:false,error}.
     std::string parts() const;
+    //! The assembly sequence of the current model (core/build plan_json) plus "html", the page to
+    //! print (steps_html), `up` as "y", "-z", ...;
+    //! or {ok:false,error}. Deterministic from the model, so a shared link gives the sender's steps.
+    std::string build_plan(const std::string &up) const;
     //! The current model in the format of `file_name`'s extension (.vef .glb .obj .mtl .zome.json .csv),
     //! with the writers' options (VEF without faces, OBJ in metres).
     //! Throws InvalidInputError for an unknown format or when there is no model.

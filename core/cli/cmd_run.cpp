@@ -1,6 +1,7 @@
 // zomeify run MESH -o OUT [...] (design.md §5): the whole pipeline (run_pipeline: Z0, then the
 // annealer) with a one-paragraph summary on stdout, progress on stderr when it is a terminal,
 // and the --stats object.
+#include <algorithm>
 #include <array>
 #include <cctype>
 #include <cmath>
@@ -12,10 +13,12 @@
 #include <unistd.h>
 
 #include "core/base/errors.h"
+#include "core/build/real_size.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
 #include "core/cli/output_options.h"
 #include "core/io/model_io.h"
+#include "core/parts/parts_list.h"
 #include "core/pipeline/pipeline.h"
 #include "core/pipeline/run_settings.h"
 #include "core/surface/prepare.h"
@@ -66,6 +69,19 @@ double setting(const Args &args, const char *key, double fallback)
     return b.integer ? static_cast<double>(args.integer(b.flag, static_cast<long long>(fallback),
                                                         static_cast<long long>(b.min), static_cast<long long>(b.max)))
                      : args.number(b.flag, fallback, b.min, b.max);
+}
+
+// The longest side of the mesh's bounding box, mesh units.
+double longest_side(const TriangleMesh &mesh)
+{
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (const Vec3 &p : mesh.positions)
+        for (int k = 0; k < 3; ++k)
+        {
+            lo[k] = std::min(lo[k], p[k]);
+            hi[k] = std::max(hi[k], p[k]);
+        }
+    return std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
 }
 
 // The options every front end shares (run_settings.h); "--resolution auto" is the default.
@@ -182,21 +198,23 @@ int cmd_run(const CommandArgs &argv)
                     {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
                      "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius",
                      "--w-distance", "--w-orientation", "--w-fairing", "--w-complexity", "--w-surface", "--surface-cap",
-                     "--surface-spacing", "--surface-zone", "--w-fold", kObjUnitsOption},
+                     "--surface-spacing", "--surface-zone", "--w-fold", "--size-cm", kObjUnitsOption},
                     {"--initial-only", "--paper-energy", "--no-clearance", "--allow-fold-overs", kNoFacesFlag});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())
         throw InvalidInputError("missing -o OUT");
-    if (args.has("--resolution") && args.has("--b1"))
-        throw InvalidInputError("give --resolution or --b1, not both");
-    const PipelineOptions options = pipeline_options(args);
+    if (int(args.has("--resolution")) + int(args.has("--b1")) + int(args.has("--size-cm")) > 1)
+        throw InvalidInputError("give one of --resolution, --b1 and --size-cm");
+    PipelineOptions options = pipeline_options(args);
     const WriteOptions write = write_options(args);
     for (const std::string &out : outputs)
         check_output_name(out);
 
     const std::string &path = args.positional()[0];
     const PreparedSurface surface = prepare_surface(read_mesh_file(path));
+    if (args.has("--size-cm"))
+        options.b1 = b1_for_size_cm(longest_side(surface.mesh), args.number("--size-cm", 0.0, -1e300, 1e300));
 
     PipelineCallbacks callbacks;
     const bool show_progress = isatty(STDERR_FILENO) != 0;
@@ -215,6 +233,13 @@ int cmd_run(const CommandArgs &argv)
     r.model.stats_json = pipeline_stats_json(r, -1);
     for (const std::string &out : outputs)
         write_model_file(out, r.model, write);
+    if (args.has("--size-cm"))
+    {
+        const auto size = parts_list(r.model).size_cm;
+        std::cout << "Built size " << std::fixed << std::setprecision(1) << size[0] << " x " << size[1] << " x "
+                  << size[2] << " cm (asked: longest side " << *args.value("--size-cm") << " cm).\n"
+                  << std::defaultfloat;
+    }
     if (const auto stats_path = args.value("--stats"))
     {
         std::ofstream f(*stats_path);

@@ -16,6 +16,7 @@ int cmd_convert(const CommandArgs& args); // cmd_convert.cpp
 int cmd_link(const CommandArgs& args);    // cmd_link.cpp
 int cmd_run(const CommandArgs& args);     // cmd_run.cpp
 int cmd_score(const CommandArgs& args);   // cmd_score.cpp
+int cmd_steps(const CommandArgs& args);   // cmd_steps.cpp
 
 struct Command
 {

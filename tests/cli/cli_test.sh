@@ -93,7 +93,7 @@ expect_error "run res 1"        'automatic \(0\) or from 2 to 256' run "$mesh" -
 expect_error "run res 300"      '--resolution.*256'      run "$mesh" --resolution 300 -o "$tmp/x.zome.json"
 expect_error "run bad format"   'unknown model format'   run "$mesh" -o "$tmp/x.stl"
 expect_error "run no -o"        'missing -o'             run "$mesh"
-expect_error "run both scales"  'not both'               run "$mesh" --resolution 8 --b1 0.2 -o "$tmp/x.zome.json"
+expect_error "run both scales" 'one of --resolution, --b1 and --size-cm'               run "$mesh" --resolution 8 --b1 0.2 -o "$tmp/x.zome.json"
 expect_error "run bad seconds"  'seconds'                run "$mesh" --seconds -1 -o "$tmp/x.zome.json"
 expect_error "run bad threads"  'threads'                run "$mesh" --threads 1000 -o "$tmp/x.zome.json"
 expect_output "run paper draw"  'on 1 thread: .*genus 0' run "$mesh" --resolution 8 --proposals 20000 --threads 1 --operator-weights 1,1,1,1,1,1,1 -o "$tmp/d.zome.json"
@@ -121,6 +121,31 @@ if node -e '
   const f = JSON.parse(require("fs").readFileSync(process.argv[2])).anneal.coverage;
   const ok = a.radius_b0 === 0 && a.samples === 0 && f.radius_b0 === 2.5 && f.samples > 500 && f.uncovered_at_end <= f.samples;
   process.exit(ok ? 0 : 1);' "$tmp/h.json" "$tmp/f.json"; then ok; else bad "run --coverage-radius not applied or not reported"; fi
+
+# steps: the assembly sequence. The JSON's steps hold every ball and strut once; the page is one file.
+expect_output "steps text"  '^step 1: .* on the table$' steps "$bunny"
+expect_output "steps figures" '^Largest overhang [0-9.]+ mm; .*breadth-first order: [0-9]+ steps' steps "$bunny"
+if "${cli[@]}" steps "$bunny" --json -o "$tmp/steps.html" >"$tmp/steps.json" 2>/dev/null && node -e '
+  const p = JSON.parse(require("fs").readFileSync(process.argv[1]));
+  const balls = p.steps.flatMap(s => s.balls), struts = p.steps.flatMap(s => s.struts);
+  const ok = p.nodes.length === 392 && p.nodes.every(n => n.length === 6 && n.every(Number.isInteger))
+    && new Set(balls).size === 392 && balls.length === 392 && struts.length === 968
+    && new Set(struts.map(([a, b]) => Math.min(a, b) + "," + Math.max(a, b))).size === 968
+    && p.figures.steps === p.steps.length && p.figures.two_strut_share >= 0 && p.naive.steps > 0;
+  process.exit(ok ? 0 : 1);' "$tmp/steps.json"; then ok; else bad "steps --json: not every part once"; fi
+steps=$(grep -c '^{"balls"' "$tmp/steps.json")
+if grep -q "Step $steps of $steps" "$tmp/steps.html" && ! grep -Eo '(https?:)?//[^"]*' "$tmp/steps.html" | grep -vq '^http://www.w3.org/2000/svg$'; then ok
+else bad "steps html: last step missing or a network address"; fi
+# --size-cm: the built model's longest side within one B1 strut (7.5 cm) of the size asked.
+out=$("${cli[@]}" run "$shared/data/meshes/bunny.obj" --size-cm 50 --proposals 20000 --threads 1 -o "$tmp/s.zome.json" 2>/dev/null)
+longest=$(sed -n 's/^Built size \([0-9.]*\) x \([0-9.]*\) x \([0-9.]*\) cm.*/\1\n\2\n\3/p' <<<"$out" | sort -n | tail -1)
+if [ -n "$longest" ] && awk -v x="$longest" 'BEGIN { exit !(x > 42.5 && x < 57.5) }'; then ok; else bad "run --size-cm 50: longest side '$longest'"; fi
+expect_error "size too small" '--size-cm must be between' run "$shared/data/meshes/bunny.obj" --size-cm 5 -o "$tmp/x.zome.json"
+expect_error "size and res"   'one of --resolution, --b1 and --size-cm' run "$shared/data/meshes/bunny.obj" --size-cm 50 --resolution 8 -o "$tmp/x.zome.json"
+printf '{"format":"zomeify-model","version":1,"nodes":[[0,0,0,0,0,0],[0,4,0,0,0,0]],"struts":[]}' > "$tmp/apart.zome.json"
+expect_error "steps apart"   'not one piece'          steps "$tmp/apart.zome.json"
+expect_error "steps bad up"  'up axis must be x, y or z' steps "$bunny" --up w
+expect_error "steps bad out" 'writes .html pages'      steps "$bunny" -o "$tmp/steps.pdf"
 
 printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/nonzome.vef"
 head -c 700 "$bunny" > "$tmp/truncated.vef"

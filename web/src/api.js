@@ -1,6 +1,6 @@
 // window.zomeify: a small scripting API over the page (documented in web/README.md). Every call
 // returns a promise; failures reject with the same one-line message the page shows.
-export function installApi(app, { ready, warmedUp, info }) {
+export function installApi(app, { ready, warmedUp, info, buildView = null }) {
   const api = {
     /** Resolves with {threaded, maxThreads, crossOriginIsolated} once the first model is shown. */
     ready,
@@ -46,6 +46,9 @@ export function installApi(app, { ready, warmedUp, info }) {
     /** Fractions of the canvas in each strut colour (a pixel check of the rendering). */
     colourCoverage: () => app.viewer.colourCoverage(),
     fit: () => app.viewer.fit(),
+    /** The Build view: opens it (resolves with the plan: nodes, steps, figures, html) and shows step k (0-based). */
+    openBuildView: () => buildView.open(),
+    buildStep: (k) => buildView.show(k),
   };
   window.zomeify = api;
   return api;

@@ -147,6 +147,7 @@ export class CoreBridge {
   snapshot() { return this.request(Request.SNAPSHOT); }
   surface() { return this.request(Request.SURFACE); }
   parts() { return this.request(Request.PARTS); }
+  buildPlan(up = 'y') { return this.request(Request.BUILD_PLAN, { up }); }
   /** @param {{vefFaces?: boolean, objUnits?: 'mm'|'m'}} [options] the writers' options */
   exportModel(name, options) { return this.request(Request.EXPORT, options ? { name, options } : { name }); }
   link() { return this.request(Request.LINK); }

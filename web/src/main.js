@@ -8,6 +8,7 @@ import { PartsTable } from './parts_table.js';
 import { Downloads } from './downloads.js';
 import { Status } from './status.js';
 import { App } from './app.js';
+import { BuildView } from './build_view.js';
 import { installApi } from './api.js';
 import { setupFileInput } from './file_input.js';
 import { SAMPLES } from './samples.js';
@@ -24,13 +25,15 @@ let app = null;
 const parts = new PartsTable(document, { onHover: (kinds) => viewer.highlightKinds(kinds) });
 app = new App({ bridge, viewer, controls, plot, parts, status, summaryEl: $('summary'), surfaceEl: $('surface-info'),
   qualityEl: $('quality'), surfaceToggleEl: $('show-surface') });
+const buildView = new BuildView(document, { bridge, viewer, status,
+  canOpen: () => (app.running ? 'The build plan is made when the run has ended.' : null) });
 new Downloads(document, { bridge, status, baseName: () => app.currentName });
 
 let resolveReady, rejectReady;
 const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });
 ready.catch(() => {});
 const info = { crossOriginIsolated: self.crossOriginIsolated === true, threaded: false, maxThreads: 1 };
-installApi(app, { ready, warmedUp: () => booted.then(() => info.warmUpMs, () => null), info });
+installApi(app, { buildView, ready, warmedUp: () => booted.then(() => info.warmUpMs, () => null), info });
 
 bridge.on(Event.FATAL, ({ error }) => {
   status.error(`The core could not start: ${error}`);

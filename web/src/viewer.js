@@ -102,6 +102,14 @@ export class Viewer {
     this.worker.postMessage({ type: 'highlight', kinds: kindIds });
   }
 
+  /**
+   * The Build view's colouring: per strut and per ball the step that adds it (Int32Array), and the
+   * step shown; null restores the model's colours.
+   */
+  showBuildStep(state) {
+    this.worker.postMessage({ type: 'buildStep', state });
+  }
+
   /** Frames the model (or the surface when there is no model). */
   fit() {
     const box = this.bounds || this.surfaceBounds;

@@ -51,6 +51,7 @@ const handlers = {
   surface({ surface }) { scene.setSurface(surface); requestRender(); },
   visibility({ faces, surface }) { scene.setVisibility(faces, surface); requestRender(); },
   highlight({ kinds }) { scene.highlightKinds(kinds); requestRender(); },
+  buildStep({ state }) { scene.setBuildStep(state); requestRender(); },
   // Reads the pixels in the same task as the draw (no preserveDrawingBuffer needed).
   coverage({ id }) {
     renderer.render(scene.root, camera);

@@ -42,6 +42,8 @@ export function buildScene(THREE, camera) {
   let struts = {}; // colour → {mesh, ids, base}
   let kinds = new Uint8Array(0);
   let highlighted = null;
+  let buildStep = null; // {strutStep, ballStep, step}: the Build view's colouring, or null
+  let ballPositions = new Float32Array(0);
   let facesMesh = null;
   let surfaceMesh = null;
   let showFaces = false;
@@ -71,6 +73,34 @@ export function buildScene(THREE, camera) {
       ids.forEach((strut, k) => mesh.setColorAt(k, !kindIds ? base : kindIds.includes(kinds[strut]) ? glow : dim));
       if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
     }
+  }
+
+  /**
+   * The Build view: struts of earlier steps in their colours, this step's glowing, later ones
+   * faint; later balls hidden. `state` is {strutStep: Int32Array, ballStep: Int32Array, step} or null.
+   */
+  function setBuildStep(state) {
+    buildStep = state;
+    const faint = new THREE.Color(0x2e333b), glow = new THREE.Color(COLOURS.highlight);
+    for (const { mesh, ids, base } of Object.values(struts)) {
+      ids.forEach((strut, k) => {
+        const t = state ? state.strutStep[strut] : -1;
+        mesh.setColorAt(k, !state ? base : t === state.step ? glow : t < state.step ? base : faint);
+      });
+      if (mesh.instanceColor) mesh.instanceColor.needsUpdate = true;
+    }
+    const balls = pool.balls;
+    if (!balls) return;
+    const m = new THREE.Matrix4(), p = new THREE.Vector3();
+    const count = ballPositions.length / 3;
+    for (let i = 0; i < count && i < balls.count; i++) {
+      const shown = !state || state.ballStep[i] <= state.step;
+      m.makeTranslation(p.fromArray(ballPositions, 3 * i));
+      if (!shown) m.scale(p.set(0, 0, 0));
+      balls.setMatrixAt(i, m);
+    }
+    balls.instanceMatrix.needsUpdate = true;
+    if (!state && highlighted) highlightKinds(highlighted);
   }
 
   function setModel(snapshot) {
@@ -125,6 +155,8 @@ export function buildScene(THREE, camera) {
       facesMesh.visible = showFaces;
       modelGroup.add(facesMesh);
     }
+    ballPositions = positions;
+    buildStep = null; // a new model has other steps; the Build view sends them again
     if (highlighted) highlightKinds(highlighted);
   }
 
@@ -167,5 +199,5 @@ export function buildScene(THREE, camera) {
       highlight: count.highlight / total, background: count.background / total };
   }
 
-  return { root, setModel, setSurface, setVisibility, highlightKinds, colourCoverage };
+  return { root, setModel, setSurface, setVisibility, highlightKinds, setBuildStep, colourCoverage };
 }

@@ -174,6 +174,7 @@ const handlers = {
     return s ? [s, [s.positions.buffer, s.triangles.buffer]] : null;
   },
   [Request.PARTS]: () => parse(session.parts()),
+  [Request.BUILD_PLAN]: ({ up }) => parse(session.buildPlan(up || 'y')),
   [Request.EXPORT]: ({ name, options }) => {
     const out = options
       ? session.exportModelWith(name, options.vefFaces !== false, options.objUnits ?? 'mm')
