@@ -181,7 +181,10 @@ export class Controls {
       const on = Number(o.size_cm) > 0;
       this.el('size-mode').checked = on;
       this.el('size-cm').disabled = !on;
-      if (on) this.el('size-cm').value = o.size_cm;
+      if (on) {
+        this.el('size-cm').value = o.size_cm;
+        this.autoMessage = ''; // the resolution chosen for the shape no longer applies
+      }
       this.el('resolution').disabled = on;
       this.scheduleEstimate();
     } else if (o.resolution !== undefined && this.el('size-mode')?.checked) {
