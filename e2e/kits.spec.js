@@ -35,7 +35,7 @@ test('size field, kits picker and Fit my kits on the bunny', async ({ page }) =>
   // One Creator 3: the line before the run says whether the estimate fits.
   await page.click('#kits-picker summary');
   await page.fill('#kit-creator3', '1');
-  await expect(page.locator('#kit-fit')).toContainText('With your kits (1x creator3): a model of about', { timeout: 20_000 });
+  await expect(page.locator('#kit-fit')).toContainText('With your kits (1 x Creator 3): a model of about', { timeout: 20_000 });
   await page.fill('#kit-basic', '-1');
   await expect(page.locator('#kit-fit')).toHaveText(/^Basic: the number of kits must be a whole number/);
   await page.fill('#kit-basic', '0');
@@ -44,7 +44,7 @@ test('size field, kits picker and Fit my kits on the bunny', async ({ page }) =>
   await page.check('#size-mode');
   await page.uncheck('#size-mode');
   await page.click('#fit-kits');
-  await expect(page.locator('#kit-fit')).toContainText('Fit my kits (1x creator3):', { timeout: 30_000 });
+  await expect(page.locator('#kit-fit')).toContainText('Fit my kits (1 x Creator 3):', { timeout: 30_000 });
   const line = await page.locator('#kit-fit').textContent();
   const [, cells, target] = line.match(/: (\d+) cells, about \d+ cm, target (\d+) balls/);
   expect(await page.inputValue('#resolution')).toBe(cells);
@@ -53,7 +53,7 @@ test('size field, kits picker and Fit my kits on the bunny', async ({ page }) =>
 
   // A short run: afterwards the result is checked against the kits, in words.
   await page.evaluate(() => window.zomeify.run({ seconds: 5 }));
-  await expect(page.locator('#kit-missing')).toHaveText(/^Your kits \(1x creator3\) (hold every part of this model\.|do not hold this model: missing .*)/);
+  await expect(page.locator('#kit-missing')).toHaveText(/^Your kits \(1 x Creator 3\) (hold every part of this model\.|do not hold this model: missing .*)/);
   const verdict = await page.locator('#kit-missing').textContent();
   const report = await page.evaluate(() => window.zomeify.parts());
   fs.mkdirSync(OUT, { recursive: true });

@@ -5,7 +5,7 @@ import { Event } from './protocol.js';
 import { SAMPLES, DEFAULT_SAMPLE, sampleUrl, fetchBytes } from './samples.js';
 import { pageUrlWith, copyText } from './share_link.js';
 import { modelBaseName, fileNameFromUrl } from './file_names.js';
-import { missingText, resultFitText } from './kits.js';
+import { missingText, ownedName, resultFitText } from './kits.js';
 
 /**
  * What a builder wants to know of the model beside its parts: how far it is from the shape (after a
@@ -321,7 +321,7 @@ export class App {
     const el = globalThis.document?.getElementById?.('kit-missing');
     const missed = Boolean(have && report?.missing && missingText(report.missing));
     if (this.controls) this.controls.kitsMissed = missed;
-    if (el) el.textContent = have ? resultFitText(report, have) : '';
+    if (el) el.textContent = have ? resultFitText(report, ownedName(have)) : '';
   }
 
   /** The quality line in plain words, its technical terms behind "technical details"; null clears. */

@@ -31,6 +31,15 @@ export function haveText(counts) {
   return { have: items.join(', '), error: '' };
 }
 
+/** "2x basic, 1x creator3" (haveText's form) as the core names it: "2 x Basic + 1 x Creator 3". */
+export function ownedName(have) {
+  return have.split(',').map((item) => item.trim()).filter(Boolean).map((item) => {
+    const [, n, id] = item.match(/^(\d+)x (\w+)$/) || [];
+    const kit = KITS.find((k) => k.id === id);
+    return kit ? `${n} x ${kit.name}` : item;
+  }).join(' + ');
+}
+
 /** {cm, error}: the size field's value checked against the core's range, with a sentence if wrong. */
 export function checkSize(value) {
   const cm = Number(value);

@@ -3,7 +3,7 @@
 // the core's answers are stubs shaped as Session::kit_check / fit_kits / estimate_size return them).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { haveText, checkSize, estimateFitText, resultFitText, missingText, fitPlanText, SIZE_CM } from '../src/kits.js';
+import { haveText, ownedName, checkSize, estimateFitText, resultFitText, missingText, fitPlanText, SIZE_CM } from '../src/kits.js';
 import { Controls } from '../src/controls.js';
 import { fakeRoot, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
 
@@ -14,6 +14,7 @@ test('haveText: the picker as the core\'s --have syntax; a bad count names the k
   assert.deepEqual(haveText({ basic: '2', creator1: '0', creator3: '1', workshop: '' }),
     { have: '2x basic, 1x creator3', error: '' });
   assert.deepEqual(haveText({}), { have: '', error: '' });
+  assert.equal(ownedName('2x basic, 1x creator3'), '2 x Basic + 1 x Creator 3');
   assert.match(haveText({ creator3: '-1' }).error, /^Creator 3: the number of kits must be a whole number from 0 to 99/);
   assert.match(haveText({ basic: '1.5' }).error, /^Basic:/);
   assert.match(haveText({ workshop: '1e9' }).error, /^Workshop:/);
