@@ -80,7 +80,9 @@ KitFitPlan plan_kit_fit(const TriangleMesh& surface, long long surface_genus, co
     plan.z0_nodes = chosen->nodes;
     plan.genus_kept = chosen->kept;
     plan.size_cm = chosen->size_cm;
-    plan.target_nodes = std::max<size_t>(4, ball_budget);
+    // Z0's own count, as a run without a target takes, unless that is over the budget: a grid much
+    // coarser than the budget (a size asked) is not filled up with extra balls.
+    plan.target_nodes = std::max<size_t>(4, std::min(ball_budget, plan.z0_nodes));
     msg << "fit to your kits: " << plan.resolution << " cells (about " << cm_text(plan.size_cm) << "), target "
         << plan.target_nodes << " balls";
     if (!plan.genus_kept)

@@ -2,9 +2,9 @@
 //! \file kit_fit_plan.h
 //! "Fit my kits" before a run: the resolution and target ball count whose model should fit the
 //! kits a person owns. Z0 is built at increasing resolutions (cheap at the sizes kits allow) and
-//! the largest one whose ball count is at most 20 % over the budget is taken (the budget is the
-//! annealer's target, which pulls the count down to it), one that keeps the surface's genus when
-//! there is one. The annealer moves the ball count, so the CLI and the page check the
+//! the largest one whose ball count is at most 20 % over the budget is taken (the annealer's target,
+//! the smaller of Z0's count and the budget, pulls the count down to it), one that keeps the
+//! surface's genus when there is one. The annealer moves the ball count, so the CLI and the page check the
 //! finished model again (kit_fit.h) and shrink the budget when it missed.
 
 #include <string>
