@@ -6,6 +6,7 @@ import path from 'node:path';
 import { test, expect } from '@playwright/test';
 import { MESHES, OUT } from './support/paths.js';
 import { openPage, pickFile, expectNoPageErrors } from './support/page.js';
+import { cli } from './support/cli.js';
 
 test('size field, kits picker and Fit my kits on the bunny', async ({ page }) => {
   test.setTimeout(180_000);
@@ -21,6 +22,11 @@ test('size field, kits picker and Fit my kits on the bunny', async ({ page }) =>
   await expect(page.locator('#estimate')).toContainText('At 50 cm', { timeout: 20_000 });
   const balls = async () => Number((await page.locator('#estimate').textContent()).match(/≈ (\d+) balls/)[1]);
   const at50 = await balls();
+  // The same formula as the CLI: `run --size-cm 50` starts from a Z0 of as many balls.
+  fs.mkdirSync(OUT, { recursive: true });
+  const z0 = cli(['run', path.join(MESHES, 'bunny.obj'), '--size-cm', '50', '--initial-only', '-o',
+    path.join(OUT, 'size50.zome.json')]);
+  expect(Number(z0.match(/\): (\d+) balls,/)[1])).toBe(at50);
   await page.fill('#size-cm', '80');
   await expect(page.locator('#estimate')).toContainText('At 80 cm', { timeout: 20_000 });
   expect(await balls()).toBeGreaterThan(at50);
