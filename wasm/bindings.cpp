@@ -37,6 +37,12 @@ public:
     std::string load_model(const std::string &bytes, const std::string &name) { return s_.load_model(bytes, name); }
     std::string open_link(const std::string &link) { return s_.open_link(link); }
     std::string estimate(int resolution) { return s_.estimate(resolution); }
+    std::string estimate_size(double size_cm) { return s_.estimate_size(size_cm); }
+    std::string kit_check(const std::string &have, double balls) const { return s_.kit_check(have, balls); }
+    std::string fit_kits(const std::string &have, int max_resolution, bool shrink)
+    {
+        return s_.fit_kits(have, max_resolution, shrink);
+    }
     std::string auto_resolution() { return s_.auto_resolution(); }
     std::string start(const std::string &options) { return s_.start(options); }
     std::string run_blocking(const std::string &options, val callback, double interval)
@@ -47,7 +53,7 @@ public:
     void cancel() { s_.cancel(); }
     std::string progress() const { return s_.progress().json(); }
     double model_version() const { return static_cast<double>(s_.model_version()); }
-    std::string parts() const { return s_.parts(); }
+    std::string parts(const std::string &have) const { return s_.parts(have); }
     std::string build_plan(const std::string &up) const { return s_.build_plan(up); }
     std::string link() const { return s_.link(); }
     std::string summary() const { return s_.summary(); }
@@ -163,6 +169,9 @@ EMSCRIPTEN_BINDINGS(zomeify_web)
         .function("loadModel", &WebSession::load_model)
         .function("openLink", &WebSession::open_link)
         .function("estimate", &WebSession::estimate)
+        .function("estimateSize", &WebSession::estimate_size)
+        .function("kitCheck", &WebSession::kit_check)
+        .function("fitKits", &WebSession::fit_kits)
         .function("autoResolution", &WebSession::auto_resolution)
         .function("start", &WebSession::start)
         .function("runBlocking", &WebSession::run_blocking)

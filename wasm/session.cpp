@@ -9,6 +9,7 @@
 #include "core/base/stopwatch.h"
 #include "core/build/assembly_plan.h"
 #include "core/build/plan_report.h"
+#include "core/build/real_size.h"
 #include "core/build/steps_html.h"
 #include "core/geom/closest_point.h"
 #include "core/geom/inside.h"
@@ -17,15 +18,19 @@
 #include "core/io/share_link.h"
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
+#include "core/parts/kit_fit.h"
 #include "core/parts/kits.h"
 #include "core/parts/parts_list.h"
 #include "core/parts/parts_report.h"
+#include "core/pipeline/kit_fit_plan.h"
 #include "core/pipeline/pipeline.h"
 #include "core/surface/read_mesh.h"
 #include "core/surface/report_text.h"
 #include "core/voxel/advisor.h"
 #include "core/voxel/auto_resolution.h"
+#include "core/voxel/carve.h"
 #include "core/voxel/initial_model.h"
+#include "core/voxel/voxel_grid.h"
 #include "core/zome/real_sizes.h"
 #include "core/zome/slots.h"
 
@@ -86,29 +91,24 @@ template <class F> std::string guarded(F &&body)
     }
 }
 
-InitialModelOptions z0_options(int resolution, long long genus, const SurfaceProjector &projector)
+InitialModelOptions z0_options(int resolution, long long genus, const SurfaceProjector &projector, double b1 = 0.0)
 {
     InitialModelOptions o;
     o.resolution = resolution;
+    o.b1 = b1;
     o.target_genus = genus;
     o.surface_probe = probe_of(projector); // as the pipeline's run builds Z0
     return o;
 }
 
 // A rough bill for a finished model of `balls` balls from Z0 across `cells` B1 cells: its size at
-// real scale, and the kits to buy for the strut mix of a typical finished model (the bunny at 11
-// cells after 30 s: 2.7 struts per ball, per kind B0..R2 below), planned as `zomeify parts` plans.
+// real scale, and the kits to buy for the strut mix of a typical finished model (kit_fit.h's
+// typical_parts, the mix the CLI's kit estimate uses), planned as `zomeify parts` plans.
 nlohmann::json size_estimate(const InitialModel &z0, size_t balls)
 {
-    static constexpr std::array<double, kStrutKindCount> kStrutsPerBall = {0.411, 0.534, 0.108, 0.489, 0.446,
-                                                                           0.129, 0.239, 0.313, 0.031};
     const auto &dims = z0.report.grid.dims;
     const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
-    PartsList parts;
-    parts.balls = balls;
-    for (size_t k = 0; k < kStrutKindCount; ++k)
-        parts.struts[k] = static_cast<size_t>(std::ceil(kStrutsPerBall[k] * static_cast<double>(balls)));
-    const KitPlan plan = plan_kits(parts);
+    const KitPlan plan = plan_kits(typical_parts(balls));
     size_t kits = 0;
     std::string text;
     for (const auto &[kit, n] : plan.kits)
@@ -117,6 +117,30 @@ nlohmann::json size_estimate(const InitialModel &z0, size_t balls)
         text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
     }
     return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0}, {"kits", kits}, {"kit_plan", text}};
+}
+
+nlohmann::json counts_json(const PartCounts &c)
+{
+    nlohmann::json j = nlohmann::json::object();
+    for (int k = 0; k < kStrutKindCount; ++k)
+        j[std::string(kind_info(static_cast<StrutKind>(k)).name)] = c[static_cast<size_t>(k)];
+    j["balls"] = c[kStrutKindCount];
+    return j;
+}
+
+std::string owned_text(const OwnedKits &owned)
+{
+    std::string s;
+    for (const auto &[kit, n] : owned)
+        s += (s.empty() ? "" : " + ") + std::to_string(n) + " x " + std::string(kit->name);
+    return s;
+}
+
+// The longest side of the mesh's bounding box, the length --size-cm scales.
+double longest_side(const TriangleMesh &mesh)
+{
+    const auto [lo, hi] = bounding_box(mesh);
+    return (hi - lo).maxCoeff();
 }
 
 } // namespace
@@ -201,9 +225,10 @@ namespace
 
 // Z0 of the loaded surface at `resolution`, and what the page shows of it: counts, genus against
 // the surface's, and the finished model's size and kits.
-std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface &s, int resolution)
+std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface &s, int resolution, double b1 = 0.0)
 {
-    InitialModel z0 = build_initial_model(s.mesh, s.is_inside(), z0_options(resolution, s.report.genus, *s.projector));
+    InitialModel z0 =
+        build_initial_model(s.mesh, s.is_inside(), z0_options(resolution, s.report.genus, *s.projector, b1));
     nlohmann::json out;
     out["ok"] = true;
     out["resolution"] = resolution;
@@ -245,6 +270,82 @@ std::string Session::estimate(int resolution)
             out["advice"] = advice.message;
             out["advice_resolution"] = advice.resolution;
             return out.dump();
+        });
+}
+
+std::string Session::estimate_size(double size_cm)
+{
+    return guarded(
+        [&]
+        {
+            const LoadedSurface &s = idle_surface();
+            const double longest = longest_side(s.mesh);
+            // The CLI's formula (real_size.h), so the page's size gives the model `run --size-cm` gives.
+            const double b1 = b1_for_size_cm(longest, size_cm);
+            auto [z0, out] = z0_estimate(s, static_cast<int>(std::lround(longest / b1)), b1);
+            out["size_cm"] = size_cm;
+            out["b1"] = b1;
+            out["advice"] = "";
+            out["advice_resolution"] = 0;
+            return out.dump();
+        });
+}
+
+std::string Session::kit_check(const std::string &have, double balls) const
+{
+    return guarded(
+        [&]
+        {
+            const OwnedKits owned = parse_owned_kits(have);
+            if (owned.empty())
+                throw InvalidInputError("no kits chosen");
+            if (!(balls >= 0 && balls <= 1e7))
+                throw InvalidInputError("the ball count must be between 0 and 10,000,000");
+            const PartCounts kits = kit_contents(owned);
+            const PartCounts need = part_counts(typical_parts(static_cast<size_t>(balls)));
+            PartCounts missing{};
+            for (size_t k = 0; k < need.size(); ++k)
+                missing[k] = need[k] > kits[k] ? need[k] - kits[k] : 0;
+            nlohmann::json out{{"ok", true},           {"fits", fits(need, kits)},
+                               {"text", fit_text(need, kits)}, {"owned", owned_text(owned)},
+                               {"missing", counts_json(missing)}, {"budget", balls_that_fit(kits)}};
+            return out.dump();
+        });
+}
+
+std::string Session::fit_kits(const std::string &have, int max_resolution, bool shrink)
+{
+    return guarded(
+        [&]
+        {
+            const LoadedSurface &s = idle_surface();
+            const OwnedKits owned = parse_owned_kits(have);
+            if (owned.empty())
+                throw InvalidInputError("choose the kits you own first");
+            const PartCounts kits = kit_contents(owned);
+            size_t budget = balls_that_fit(kits);
+            const ZomeModel m = model();
+            if (shrink && !m.nodes.empty())
+            {
+                // The model on screen missed these kits: as the CLI's next try, fewer balls by the
+                // scarcest part's shortfall.
+                const PartCounts need = part_counts(parts_list(m));
+                if (!fits(need, kits))
+                    budget = std::min(budget, shrunk_ball_budget(need, kits, m.nodes.size()));
+            }
+            const KitFitPlan plan = plan_kit_fit(s.mesh, s.report.genus, s.is_inside(), probe_of(*s.projector), budget,
+                                                 max_resolution > 0 ? max_resolution : kMaxResolution);
+            return nlohmann::json{{"ok", true},
+                                  {"possible", plan.possible},
+                                  {"resolution", plan.resolution},
+                                  {"target_nodes", plan.target_nodes},
+                                  {"z0_nodes", plan.z0_nodes},
+                                  {"size_cm", plan.size_cm},
+                                  {"genus_kept", plan.genus_kept},
+                                  {"ball_budget", plan.ball_budget},
+                                  {"owned", owned_text(owned)},
+                                  {"message", plan.message}}
+                .dump();
         });
 }
 
@@ -294,6 +395,8 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
         const LoadedSurface &s = *surface_;
         PipelineOptions po = pipeline_options(options);
         po.advisor_seconds = 3.0;
+        if (options.size_cm > 0.0)
+            po.b1 = b1_for_size_cm(longest_side(s.mesh), options.size_cm); // as `run --size-cm`
         AnnealOptions &a = po.anneal;
         // 0 = automatic: every thread this build can start.
         a.threads = options.threads == 0 ? max_run_threads() : std::clamp(options.threads, 1, max_run_threads());
@@ -480,15 +583,16 @@ RunProgress Session::progress() const
     return run_ ? run_->get() : RunProgress{};
 }
 
-std::string Session::parts() const
+std::string Session::parts(const std::string &have) const
 {
     return guarded(
         [&]
         {
+            const OwnedKits owned = parse_owned_kits(have); // a bad kit name fails before the model is read
             const ZomeModel m = model();
             if (m.nodes.empty())
                 throw InvalidInputError("no model yet");
-            return parts_report_json(parts_list(m), {});
+            return parts_report_json(parts_list(m), owned);
         });
 }
 

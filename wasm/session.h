@@ -43,6 +43,16 @@ public:
     //! Z0 at `resolution` cells without keeping it: {nodes, struts, genus, surface_genus, kept,
     //! advice, size_mm, kits}. Used by the page's live estimate.
     std::string estimate(int resolution);
+    //! Z0 for a built longest side of `size_cm` (core/build/real_size.h, as `run --size-cm`):
+    //! estimate()'s fields plus {size_cm, b1}; a clear error for a size out of range.
+    std::string estimate_size(double size_cm);
+    //! Whether a typical model of `balls` balls fits the kits in `have` ("creator3, 2x basic", as
+    //! `parts --have`): {fits, text, owned, missing{...}, budget} (budget: the balls that fit).
+    std::string kit_check(const std::string &have, double balls) const;
+    //! "Fit my kits" (core/pipeline/kit_fit_plan.h): {possible, resolution, target_nodes, z0_nodes,
+    //! size_cm, genus_kept, ball_budget, message}. With `shrink`, the current model (a run that
+    //! missed the kits) lowers the budget as the CLI's next try does. `max_resolution` 0: no bound.
+    std::string fit_kits(const std::string &have, int max_resolution, bool shrink);
     //! The resolution a run takes when the user chose none (core/voxel/auto_resolution.h):
     //! {resolution, genus_kept, searched_to, message} plus estimate()'s fields for it.
     std::string auto_resolution();
@@ -67,7 +77,8 @@ public:
     const TriangleMesh *surface() const;
 
     //! The parts list and kit plan of the current model (parts_report_json) or {ok:false,error}.
-    std::string parts() const;
+    //! With `have` (kits owned, `parts --have` syntax) the report adds what is missing.
+    std::string parts(const std::string &have = "") const;
     //! The assembly sequence of the current model (core/build plan_json) plus "html", the page to
     //! print (steps_html), `up` as "y", "-z", ...;
     //! or {ok:false,error}. Deterministic from the model, so a shared link gives the sender's steps.

@@ -17,8 +17,12 @@
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
 #include "core/cli/output_options.h"
+#include "core/cli/run_kits.h"
+#include "core/geom/closest_point.h"
+#include "core/geom/inside.h"
 #include "core/io/model_io.h"
 #include "core/parts/parts_list.h"
+#include "core/pipeline/kit_fit_plan.h"
 #include "core/pipeline/pipeline.h"
 #include "core/pipeline/run_settings.h"
 #include "core/surface/prepare.h"
@@ -198,8 +202,8 @@ int cmd_run(const CommandArgs &argv)
                     {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
                      "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius",
                      "--w-distance", "--w-orientation", "--w-fairing", "--w-complexity", "--w-surface", "--surface-cap",
-                     "--surface-spacing", "--surface-zone", "--w-fold", "--size-cm", kObjUnitsOption},
-                    {"--initial-only", "--paper-energy", "--no-clearance", "--allow-fold-overs", kNoFacesFlag});
+                     "--surface-spacing", "--surface-zone", "--w-fold", "--size-cm", "--have", kObjUnitsOption},
+                    {"--initial-only", "--fit-kits", "--paper-energy", "--no-clearance", "--allow-fold-overs", kNoFacesFlag});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())
@@ -212,9 +216,18 @@ int cmd_run(const CommandArgs &argv)
         check_output_name(out);
 
     const std::string &path = args.positional()[0];
+    const OwnedKits owned = parse_owned_kits(args.value("--have").value_or(""));
+    const bool fit = args.has("--fit-kits");
+    if (fit && owned.empty())
+        throw InvalidInputError("--fit-kits needs --have KITS, the kits you own (e.g. --have creator3)");
+    if (fit && args.has("--target-nodes"))
+        throw InvalidInputError("give --target-nodes or --fit-kits, not both (--fit-kits chooses the ball count)");
+    if (fit && args.has("--initial-only"))
+        throw InvalidInputError("--fit-kits needs the annealer: drop --initial-only");
     const PreparedSurface surface = prepare_surface(read_mesh_file(path));
     if (args.has("--size-cm"))
         options.b1 = b1_for_size_cm(longest_side(surface.mesh), args.number("--size-cm", 0.0, -1e300, 1e300));
+    const PartCounts have = kit_contents(owned);
 
     PipelineCallbacks callbacks;
     const bool show_progress = isatty(STDERR_FILENO) != 0;
@@ -225,9 +238,61 @@ int cmd_run(const CommandArgs &argv)
                       << p.temperature << std::defaultfloat << "  N " << p.nodes << "  " << p.commits << " commits   "
                       << std::flush;
         };
-    PipelineResult r = run_pipeline(surface.mesh, surface.report.genus, options, callbacks);
-    if (show_progress && r.anneal)
-        std::cerr << "\n";
+    // Before annealing (Z0 is known): does a model of the target's size typically fit the kits?
+    if (!owned.empty() && !options.initial_only)
+        callbacks.initial = [&](const ZomeModel &z0) {
+            const size_t target = options.anneal.target_nodes ? options.anneal.target_nodes : z0.nodes.size();
+            std::cout << estimate_fit_line(target, have) << "\n" << std::flush;
+        };
+
+    // --fit-kits: plan a resolution and ball budget, run, check the result's parts, and shrink the
+    // budget when it missed (the annealer moves the ball count, so the estimate alone is not enough).
+    std::optional<SurfaceProjector> projector;
+    std::optional<InsideTest> inside;
+    int max_resolution = 0;
+    size_t budget = 0;
+    if (fit)
+    {
+        projector.emplace(surface.mesh);
+        inside.emplace(*projector);
+        max_resolution = fit_max_resolution(args, longest_side(surface.mesh));
+        budget = balls_that_fit(have);
+    }
+    const auto plan_for = [&](size_t balls) {
+        return plan_kit_fit(surface.mesh, surface.report.genus,
+                            [&](const Vec3 &p) { return inside->is_inside(p); }, probe_of(*projector), balls,
+                            max_resolution);
+    };
+    PipelineResult r;
+    bool fitted = false;
+    for (int attempt = 1;; ++attempt)
+    {
+        if (fit)
+        {
+            const KitFitPlan plan = plan_for(budget);
+            if (!plan.possible)
+                throw InvalidInputError((attempt == 1 ? "" : "after " + std::to_string(attempt - 1) + " tries: ") +
+                                        plan.message + " (" + owned_text(owned) + ")");
+            std::cout << "Fit my kits (" << owned_text(owned) << "), try " << attempt << " of " << kFitAttempts << ": "
+                      << plan.message << ".\n" << std::flush;
+            options.b1 = 0.0;
+            options.resolution = plan.resolution;
+            options.anneal.target_nodes = plan.target_nodes;
+        }
+        r = run_pipeline(surface.mesh, surface.report.genus, options, callbacks);
+        if (show_progress && r.anneal)
+            std::cerr << "\n";
+        if (!fit)
+            break;
+        const PartCounts need = part_counts(parts_list(r.model));
+        fitted = fits(need, have);
+        if (fitted || attempt == kFitAttempts)
+            break;
+        const size_t next = std::min(shrunk_ball_budget(need, have, r.model.nodes.size()), budget - 1);
+        std::cout << "Try " << attempt << " gave " << r.model.nodes.size() << " balls: " << fit_text(need, have)
+                  << "; trying again with at most " << next << " balls.\n";
+        budget = next;
+    }
 
     const std::string stats = pipeline_stats_json(r);
     r.model.stats_json = pipeline_stats_json(r, -1);
@@ -248,6 +313,25 @@ int cmd_run(const CommandArgs &argv)
             throw IoError("cannot write " + *stats_path);
     }
     std::cout << summary(path, r, outputs) << "\n";
+    if (!owned.empty() && !options.initial_only)
+    {
+        const PartsList parts = parts_list(r.model);
+        const PartCounts need = part_counts(parts);
+        std::cout << "Your kits (" << owned_text(owned) << "): the model (" << parts.balls << " balls, "
+                  << parts.strut_count << " struts) " << (fits(need, have) ? "fits them" : fit_text(need, have))
+                  << ".\n";
+        if (fit && !fitted)
+        {
+            // The nearest smaller size the estimate expects to fit; not run, so it says so.
+            const KitFitPlan next = plan_for(std::min(shrunk_ball_budget(need, have, parts.balls), budget - 1));
+            std::cout << "Does not fit after " << kFitAttempts << " tries. "
+                      << (next.possible ? "The nearest smaller size expected to fit (not yet run): --resolution " +
+                                              std::to_string(next.resolution) + " --target-nodes " +
+                                              std::to_string(next.target_nodes) + " (" + next.message + ")."
+                                        : "No smaller size is expected to fit: " + next.message + ".")
+                      << "\n";
+        }
+    }
     return 0;
 }
 

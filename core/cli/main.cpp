@@ -22,7 +22,9 @@ const std::vector<Command>& commands()
         {"run", "run MESH -o OUT [-o OUT2 ...] [--resolution N | --b1 L | --size-cm CM] [--target-nodes N] [--seconds S | --proposals N]\n"
                 "          [--threads T] [--seed K] [--t0 T | --t0-factor F] [--t-min T | --t-min-ratio R]\n"
                 "          [--operator-weights I,A,S,R,F,M,N] [--coverage-radius B0S] [--initial-only] [--stats STATS.json]\n"
-                "          [--obj-units mm|m] [--no-faces]   Z0, then annealing",
+                "          [--obj-units mm|m] [--no-faces]   Z0, then annealing\n"
+                "          [--have KITS [--fit-kits]]   whether the model fits the kits you own; --fit-kits chooses the\n"
+                "          size and ball count so that it does (checked on the result, up to 3 tries)",
          cmd_run},
     };
     return list;

@@ -39,6 +39,7 @@ std::vector<double> values(const RunSettings& s)
                              static_cast<double>(s.threads),    static_cast<double>(s.seed)};
     for (const WeightField& w : kWeights)
         v.push_back(s.energy.*w.field);
+    v.push_back(s.size_cm);
     return v;
 }
 
@@ -74,6 +75,8 @@ const std::vector<OptionBounds>& run_option_bounds()
         {"weights.complex", "--w-complexity", 0, 1e6, false},
         {"weights.surface", "--w-surface", 0, 1e6, false},
         {"weights.fold", "--w-fold", 0, 1e6, false},
+        // 0 = off; real_size.h's own bounds (about 25 cm to 19 m) are checked once the mesh is known.
+        {"size_cm", "--size-cm", 0, 1900, false},
     };
     return bounds;
 }
@@ -129,6 +132,7 @@ RunSettings run_settings_from_json(const std::string& json)
     s.target_nodes = static_cast<long long>(number(j, "target_nodes", static_cast<double>(s.target_nodes)));
     s.threads = static_cast<int>(number(j, "threads", s.threads));
     s.seed = static_cast<uint64_t>(number(j, "seed", static_cast<double>(s.seed)));
+    s.size_cm = number(j, "size_cm", s.size_cm);
     if (j.contains("initial_only"))
     {
         if (!j.at("initial_only").is_boolean())
@@ -155,7 +159,8 @@ std::string run_settings_json(const RunSettings& s)
     const nlohmann::json j = {{"resolution", s.resolution}, {"seconds", s.seconds},
                               {"proposals", s.proposals},   {"target_nodes", s.target_nodes},
                               {"threads", s.threads},       {"seed", s.seed},
-                              {"initial_only", s.initial_only}, {"weights", weights}};
+                              {"initial_only", s.initial_only}, {"size_cm", s.size_cm},
+                              {"weights", weights}};
     return j.dump();
 }
 

@@ -32,6 +32,9 @@ struct RunSettings
     int threads = 0;            //!< annealing threads; 0 = automatic (each front end's rule)
     uint64_t seed = 1;
     bool initial_only = false; //!< stop after Z0
+    //! > 0: the built longest side in cm (core/build/real_size.h) instead of the resolution; the
+    //! front end that holds the mesh turns it into b1 (the CLI's --size-cm, the page's size field).
+    double size_cm = 0.0;
     EnergyOptions energy;      //!< the energy's weights (energy_options.h)
 
     //! Throws InvalidInputError with a one-line message naming the first option out of bounds.
@@ -53,7 +56,7 @@ const std::vector<OptionBounds>& run_option_bounds();
 const OptionBounds& option_bounds(const std::string& key);
 
 //! Reads a JSON object with any of the keys resolution, seconds, proposals, target_nodes, threads,
-//! seed, initial_only, weights {dist, orient, fair, complex, surface, fold}; missing keys keep
+//! seed, initial_only, size_cm, weights {dist, orient, fair, complex, surface, fold}; missing keys keep
 //! their defaults. Throws InvalidInputError for a wrong type or a value out of bounds.
 RunSettings run_settings_from_json(const std::string& json);
 

@@ -142,6 +142,28 @@ longest=$(sed -n 's/^Built size \([0-9.]*\) x \([0-9.]*\) x \([0-9.]*\) cm.*/\1\
 if [ -n "$longest" ] && awk -v x="$longest" 'BEGIN { exit !(x > 42.5 && x < 57.5) }'; then ok; else bad "run --size-cm 50: longest side '$longest'"; fi
 expect_error "size too small" '--size-cm must be between' run "$shared/data/meshes/bunny.obj" --size-cm 5 -o "$tmp/x.zome.json"
 expect_error "size and res"   'one of --resolution, --b1 and --size-cm' run "$shared/data/meshes/bunny.obj" --size-cm 50 --resolution 8 -o "$tmp/x.zome.json"
+expect_error "size negative"  '--size-cm must be between' run "$shared/data/meshes/bunny.obj" --size-cm -50 -o "$tmp/x.zome.json"
+expect_error "size absurd"    '--size-cm must be between' run "$shared/data/meshes/bunny.obj" --size-cm 1e9 -o "$tmp/x.zome.json"
+# --have: a line before annealing (does the estimate fit) and one after (what the result lacks).
+out=$("${cli[@]}" run "$shared/data/meshes/bunny.obj" --resolution 6 --have creator3 --proposals 20000 --threads 1 -o "$tmp/h.zome.json" 2>/dev/null)
+if grep -Eq '^Estimate: a model of about [0-9]+ balls typically (fits|does not fit) your kits' <<<"$out" &&
+   grep -Eq '^Your kits \(1 x Creator 3\): the model \([0-9]+ balls, [0-9]+ struts\) (fits them|missing with your kits: .*)\.$' <<<"$out"; then ok
+else bad "run --have: $(tail -c 300 <<<"$out")"; fi
+# --fit-kits with one Creator 3: a plan, then the result's own parts fit the kit or the output says
+# it does not and names the nearest smaller size expected to.
+out=$("${cli[@]}" run "$shared/data/meshes/bunny.obj" --have creator3 --fit-kits --proposals 100000 --threads 1 -o "$tmp/f.zome.json" 2>/dev/null)
+if grep -Eq '^Fit my kits \(1 x Creator 3\), try 1 of 3: fit to your kits: [0-9]+ cells' <<<"$out" &&
+   { grep -q '^Your kits (1 x Creator 3): the model .* fits them\.$' <<<"$out" ||
+     grep -q '^Does not fit after 3 tries\. ' <<<"$out"; }; then ok
+else bad "run --fit-kits: $(tail -c 400 <<<"$out")"; fi
+if grep -q 'fits them\.$' <<<"$out"; then
+  expect_output "fit verified" '"missing": \{' parts "$tmp/f.zome.json" --json --have creator3
+  if "${cli[@]}" parts "$tmp/f.zome.json" --have creator3 | grep -q '^missing with your kits: nothing$'; then ok; else bad "fit: parts --have says something is missing"; fi
+fi
+expect_error "fit no kits"    '--fit-kits needs --have KITS'          run "$shared/data/meshes/bunny.obj" --fit-kits -o "$tmp/x.zome.json"
+expect_error "fit and target" 'give --target-nodes or --fit-kits'     run "$shared/data/meshes/bunny.obj" --have basic --fit-kits --target-nodes 50 -o "$tmp/x.zome.json"
+expect_error "run bad kit"    "unknown kit 'creator9'"                run "$shared/data/meshes/bunny.obj" --have creator9 -o "$tmp/x.zome.json"
+expect_error "run bad count"  'kit count in .* must be between 1 and 99999' run "$shared/data/meshes/bunny.obj" --have "0x basic" -o "$tmp/x.zome.json"
 printf '{"format":"zomeify-model","version":1,"nodes":[[0,0,0,0,0,0],[0,4,0,0,0,0]],"struts":[]}' > "$tmp/apart.zome.json"
 expect_error "steps apart"   'not one piece'          steps "$tmp/apart.zome.json"
 expect_error "steps bad up"  'up axis must be x, y or z' steps "$bunny" --up w

@@ -5,6 +5,7 @@ import { Event } from './protocol.js';
 import { SAMPLES, DEFAULT_SAMPLE, sampleUrl, fetchBytes } from './samples.js';
 import { pageUrlWith, copyText } from './share_link.js';
 import { modelBaseName, fileNameFromUrl } from './file_names.js';
+import { missingText, ownedName, resultFitText } from './kits.js';
 
 /**
  * What a builder wants to know of the model beside its parts: how far it is from the shape (after a
@@ -295,7 +296,11 @@ export class App {
   /** The parts list, the result line and the quality line of the model on screen; its summary. */
   async refreshResults() {
     try {
-      this.parts.show(await this.bridge.parts());
+      // With kits chosen, the report says what of this model they lack (after a run: checked on the result).
+      const { have } = this.controls.owned?.() ?? { have: '' };
+      const report = await this.bridge.parts(have);
+      this.parts.show(report);
+      this.showKitResult(report, have);
       const s = await this.bridge.summary();
       this.shownSummary = s;
       this.summaryEl.textContent = resultText(s, this.modelOfSurface ? this.surfaceGenus : null);
@@ -304,10 +309,19 @@ export class App {
     } catch (e) {
       this.shownSummary = null;
       this.parts.clear();
+      this.showKitResult(null, '');
       this.summaryEl.textContent = '';
       this.showQuality(null);
       return null;
     }
+  }
+
+  /** What the kits owned lack for the model on screen (empty without kits). */
+  showKitResult(report, have) {
+    const el = globalThis.document?.getElementById?.('kit-missing');
+    const missed = Boolean(have && report?.missing && missingText(report.missing));
+    if (this.controls) this.controls.kitsMissed = missed;
+    if (el) el.textContent = have ? resultFitText(report, ownedName(have)) : '';
   }
 
   /** The quality line in plain words, its technical terms behind "technical details"; null clears. */

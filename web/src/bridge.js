@@ -136,6 +136,14 @@ export class CoreBridge {
   }
 
   estimate(resolution) { return this.request(Request.ESTIMATE, { resolution }); }
+  /** Z0 for a built longest side of `sizeCm` (the core's real_size formula, as `run --size-cm`). */
+  estimateSize(sizeCm) { return this.request(Request.ESTIMATE_SIZE, { sizeCm }); }
+  /** Whether a typical model of `balls` balls fits the kits `have` ("creator3, 2x basic"). */
+  kitCheck(have, balls) { return this.request(Request.KIT_CHECK, { have, balls }); }
+  /** "Fit my kits": the resolution and target the core plans for `have`. */
+  fitKits(have, maxResolution = 0, shrink = false) {
+    return this.request(Request.FIT_KITS, { have, maxResolution, shrink });
+  }
   autoResolution() { return this.request(Request.AUTO_RESOLUTION); }
   run(options) { return this.request(Request.RUN, { options }); }
   /** Threaded build: asks the run to stop. Single-threaded: ends the worker (restart above). */
@@ -146,7 +154,7 @@ export class CoreBridge {
   warmUp() { return this.request(Request.WARM_UP); }
   snapshot() { return this.request(Request.SNAPSHOT); }
   surface() { return this.request(Request.SURFACE); }
-  parts() { return this.request(Request.PARTS); }
+  parts(have = '') { return this.request(Request.PARTS, { have }); }
   buildPlan(up = 'y') { return this.request(Request.BUILD_PLAN, { up }); }
   /** @param {{vefFaces?: boolean, objUnits?: 'mm'|'m'}} [options] the writers' options */
   exportModel(name, options) { return this.request(Request.EXPORT, options ? { name, options } : { name }); }

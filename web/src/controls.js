@@ -5,6 +5,8 @@
 // Defaults, bounds and presets come from the core at start-up (setSchema: core/pipeline/
 // run_settings.h), so the page, the Session and the CLI share them; these are only the values the
 // form shows before the core is up.
+import { KITS, haveText, checkSize, estimateFitText, fitPlanText } from './kits.js';
+
 export const PRESETS = { quick: 5, standard: 30, thorough: 120 };
 const DEFAULTS = { resolution: 12, preset: 'standard', seconds: 30, target_nodes: 0, threads: 0, seed: 1,
   weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } };
@@ -55,10 +57,19 @@ export function adviceText(e, resolution) {
 }
 
 export class Controls {
-  /** @param {HTMLElement} root @param {{estimate: (r:number)=>Promise<object>}} deps */
-  constructor(root, { estimate }) {
+  /**
+   * @param {HTMLElement} root
+   * @param {{estimate: (r:number)=>Promise<object>, estimateSize?: (cm:number)=>Promise<object>,
+   *   kitCheck?: (have:string, balls:number)=>Promise<object>,
+   *   fitKits?: (have:string, maxResolution:number, shrink:boolean)=>Promise<object>}} deps
+   */
+  constructor(root, { estimate, estimateSize = null, kitCheck = null, fitKits = null }) {
     this.root = root;
     this.estimateFn = estimate;
+    this.estimateSizeFn = estimateSize;
+    this.kitCheckFn = kitCheck;
+    this.fitKitsFn = fitKits;
+    this.kitsMissed = false; // the model on screen is a run that missed the kits (App sets it)
     this.el = (id) => root.querySelector('#' + id);
     this.maxThreads = 1;
     this.estimateTimer = null;
@@ -71,6 +82,11 @@ export class Controls {
 
     this.el('resolution').addEventListener('input', () => this.set({ resolution: this.el('resolution').value }));
     this.el('preset').addEventListener('change', () => this.presetChanged());
+    this.el('size-mode')?.addEventListener('change', () => this.set({ size_cm: this.el('size-mode').checked
+      ? Number(this.el('size-cm').value) || 50 : 0 }));
+    this.el('size-cm')?.addEventListener('input', () => this.scheduleEstimate());
+    for (const { id } of KITS) this.el('kit-' + id)?.addEventListener('input', () => this.scheduleEstimate());
+    this.el('fit-kits')?.addEventListener('click', () => this.fitMyKits());
     this.set(DEFAULTS);
   }
 
@@ -125,6 +141,7 @@ export class Controls {
    */
   runBlocker() {
     const e = this.lastEstimate;
+    if (this.sizeMode()) return checkSize(this.el('size-cm').value).error;
     if (!e || e.kept || this.genusConsent || Number(this.el('resolution').value) !== e.resolution) return '';
     return `${adviceText(e, e.resolution)}. Use the suggested resolution, or tick "run anyway".`;
   }
@@ -158,6 +175,22 @@ export class Controls {
       this.el('resolution').value = o.resolution;
       this.el('resolution-value').textContent = String(o.resolution);
       this.scheduleEstimate();
+    }
+    if (o.size_cm !== undefined && this.el('size-mode')) {
+      // A size replaces the resolution until it is set to 0 (or a resolution is chosen).
+      const on = Number(o.size_cm) > 0;
+      this.el('size-mode').checked = on;
+      this.el('size-cm').disabled = !on;
+      if (on) {
+        this.el('size-cm').value = o.size_cm;
+        this.autoMessage = ''; // the resolution chosen for the shape no longer applies
+      }
+      this.el('resolution').disabled = on;
+      this.scheduleEstimate();
+    } else if (o.resolution !== undefined && this.el('size-mode')?.checked) {
+      this.el('size-mode').checked = false;
+      this.el('size-cm').disabled = true;
+      this.el('resolution').disabled = false;
     }
     if (o.preset !== undefined) {
       this.el('preset').value = o.preset;
@@ -193,8 +226,82 @@ export class Controls {
       seed: num('seed', 1),
       proposals: num('proposals', 0),
       initial_only: this.initialOnly,
+      size_cm: this.sizeMode() ? checkSize(this.el('size-cm').value).cm : 0,
       weights: Object.fromEntries(Object.keys(DEFAULTS.weights).map((k) => [k, num('w-' + k, DEFAULTS.weights[k])])),
     };
+  }
+
+  /** True when the built size, not the resolution, sets the scale. */
+  sizeMode() {
+    return Boolean(this.el('size-mode')?.checked);
+  }
+
+  /** The kits picker as `--have` text ('' when none), or its error. */
+  owned() {
+    const counts = Object.fromEntries(KITS.map(({ id }) => [id, this.el('kit-' + id)?.value ?? '']));
+    return haveText(counts);
+  }
+
+  /** Sets the picker: {creator3: 1, basic: 2}; kits not named go to 0. */
+  setKits(counts) {
+    for (const { id } of KITS) if (this.el('kit-' + id)) this.el('kit-' + id).value = String(counts[id] ?? 0);
+    this.scheduleEstimate();
+  }
+
+  /** Before the run: does the estimated model fit the kits owned? (the core's kit check) */
+  async showKitFit(e) {
+    const out = this.el('kit-fit');
+    if (!out) return;
+    const { have, error } = this.owned();
+    if (error) {
+      out.textContent = error;
+      return;
+    }
+    if (!have || !e || !this.kitCheckFn) {
+      out.textContent = '';
+      return;
+    }
+    const balls = Number(this.el('target').value) || e.nodes;
+    // The plan "Fit my kits" set stays in view while the form still holds it.
+    const fit = this.lastFit;
+    const planned = fit?.possible && !this.sizeMode() && Number(this.el('resolution').value) === fit.resolution &&
+      Number(this.el('target').value) === fit.target_nodes;
+    try {
+      const line = estimateFitText(await this.kitCheckFn(have, balls), balls);
+      out.textContent = planned ? `${this.fitText} ${line}` : line;
+    } catch (err) {
+      out.textContent = err.message;
+    }
+  }
+
+  /**
+   * "Fit my kits": the core plans a resolution and target ball count within the kits (after a run
+   * that missed them, a smaller one); the form takes them. A size asked is the largest one wanted.
+   * @returns {Promise<object|null>} the plan, or null with the reason on the line
+   */
+  async fitMyKits() {
+    const out = this.el('kit-fit');
+    const { have, error } = this.owned();
+    const fail = (message) => {
+      out.textContent = message;
+      this.lastFit = null;
+      return null;
+    };
+    if (error) return fail(error);
+    if (!have) return fail('Choose the kits you own first (how many of each).');
+    if (!this.fitKitsFn) return fail('The core is not ready yet.');
+    const bound = this.sizeMode() && this.lastEstimate?.resolution > 0 ? this.lastEstimate.resolution : 0;
+    let plan;
+    try {
+      plan = await this.fitKitsFn(have, bound, this.kitsMissed);
+    } catch (err) {
+      return fail(err.message);
+    }
+    this.lastFit = plan;
+    if (plan.possible) this.set({ resolution: plan.resolution, target_nodes: plan.target_nodes });
+    this.fitText = fitPlanText(plan);
+    out.textContent = this.fitText;
+    return plan;
   }
 
   setRunning(running) {
@@ -213,11 +320,26 @@ export class Controls {
     const resolution = Number(this.el('resolution').value);
     let e;
     try {
+      if (this.sizeMode()) {
+        const { cm, error } = checkSize(this.el('size-cm').value);
+        if (error) {
+          this.showEstimate(null, resolution);
+          this.el('estimate').textContent = error;
+          return;
+        }
+        e = await this.estimateSizeFn(cm);
+        if (serial !== this.estimateSerial) return;
+        this.showEstimate(e, e.resolution);
+        return;
+      }
       e = await this.estimateFn(resolution);
     } catch (err) {
       // No mesh loaded: clear the line and the last mesh's warning with it. Busy with a run: the
       // line still describes the model being made.
-      if (serial === this.estimateSerial && !/in progress/.test(err?.message)) this.showEstimate(null, resolution);
+      if (serial === this.estimateSerial && !/in progress/.test(err?.message)) {
+        this.showEstimate(null, resolution);
+        if (this.sizeMode() && !/no mesh/.test(err?.message)) this.el('estimate').textContent = err.message; // the core's range
+      }
       return;
     }
     if (serial !== this.estimateSerial) return;
@@ -232,12 +354,15 @@ export class Controls {
     warn.textContent = '';
     if (!e) {
       out.textContent = '';
+      this.showKitFit(null);
       warn.replaceChildren();
       warn.hidden = true;
       return;
     }
     const target = Number(this.el('target').value) || e.nodes;
-    out.textContent = [this.autoMessage, estimateText(e, target) + (isLarge(e) ? ' — a very large build.' : '')]
+    this.showKitFit(e);
+    const asked = this.sizeMode() && e.size_cm ? `At ${e.size_cm} cm (about ${e.resolution} cells):` : '';
+    out.textContent = [this.autoMessage, asked, estimateText(e, target) + (isLarge(e) ? ' — a very large build.' : '')]
       .filter(Boolean).join(' ');
     warn.replaceChildren();
     warn.hidden = e.kept;

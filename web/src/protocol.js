@@ -10,12 +10,15 @@ export const Request = Object.freeze({
   OPEN_LINK: 'openLink',  // {link}                          → {kind: 'model'}
   ESTIMATE: 'estimate',   // {resolution}                    → {nodes, struts, genus, surface_genus, kept, advice,
                           //                                    advice_resolution, size_mm, kits, kit_plan}
+  ESTIMATE_SIZE: 'estimateSize', // {sizeCm}                → estimate's fields + {size_cm, b1} (as run --size-cm)
+  KIT_CHECK: 'kitCheck',  // {have, balls}                   → {fits, text, owned, missing{B0..R2, balls}, budget}
+  FIT_KITS: 'fitKits',    // {have, maxResolution, shrink}   → {possible, resolution, target_nodes, size_cm, message, ...}
   AUTO_RESOLUTION: 'autoResolution', // {}                   → estimate's fields + {resolution, message, searched_to}
   RUN: 'run',             // {options: RunOptions}           → final Progress (after the run ends)
   CANCEL: 'cancel',       // {}                              → {}   (the run's reply follows when it stops)
   SNAPSHOT: 'snapshot',   // {}                              → Snapshot
   SURFACE: 'surface',     // {}                              → {positions, triangles} | null
-  PARTS: 'parts',         // {}                              → parts report (see core/parts/parts_report.h)
+  PARTS: 'parts',         // {have?}                         → parts report (+ missing with the kits in have) (see core/parts/parts_report.h)
   BUILD_PLAN: 'buildPlan', // {up}                          → plan (core/build/plan_report.h plan_json) + {html}
   EXPORT: 'export',       // {name, options?: {vefFaces, objUnits}} → {name, bytes: Uint8Array}
   LINK: 'link',           // {}                              → {link: 'm=2.…'}
@@ -36,6 +39,7 @@ export const Event = Object.freeze({
  * @property {number} [resolution]   cells along the longest side for Z0 (bounds: the core's schema)
  * @property {number} [seconds]      annealing time budget
  * @property {number} [target_nodes] N_target; 0 = the node count of Z0
+ * @property {number} [size_cm]      > 0: the built longest side in cm instead of the resolution (as run --size-cm)
  * @property {number} [threads]      annealing threads (clamped to maxThreads)
  * @property {number} [seed]
  * @property {{dist?: number, orient?: number, fair?: number, complex?: number}} [weights]

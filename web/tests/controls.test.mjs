@@ -122,7 +122,7 @@ test('automatic resolution: set on the slider with its message; a lost genus nee
 test('the form read as RunOptions: defaults, and empty or bad fields fall back', () => {
   const { controls, el } = makeControls();
   assert.deepEqual(controls.get(), { resolution: 12, seconds: 30, target_nodes: 0, threads: 2, seed: 1, proposals: 0,
-    initial_only: false, weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } });
+    initial_only: false, size_cm: 0, weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } });
   el('seed').value = '';
   el('w-fair').value = 'abc';
   el('threads').value = '9'; // more than the build has

@@ -139,7 +139,7 @@ function warmUp() {
   try {
     parse(scratch.loadMesh(new TextEncoder().encode(OCTAHEDRON_OBJ), 'warm-up.obj'));
     parse(scratch.runBlocking(JSON.stringify(WARM_UP_RUN), () => false, 1));
-    parse(scratch.parts());
+    parse(scratch.parts(''));
   } finally {
     scratch.delete();
   }
@@ -159,6 +159,10 @@ const handlers = {
     return result;
   },
   [Request.ESTIMATE]: ({ resolution }) => parse(session.estimate(resolution)),
+  [Request.ESTIMATE_SIZE]: ({ sizeCm }) => parse(session.estimateSize(Number(sizeCm))),
+  [Request.KIT_CHECK]: ({ have, balls }) => parse(session.kitCheck(String(have ?? ''), Number(balls) || 0)),
+  [Request.FIT_KITS]: ({ have, maxResolution, shrink }) =>
+    parse(session.fitKits(String(have ?? ''), Math.trunc(Number(maxResolution) || 0), Boolean(shrink))),
   [Request.AUTO_RESOLUTION]: () => parse(session.autoResolution()),
   [Request.RUN]: ({ options }) => {
     if (running) throw new Error('a run is in progress');
@@ -173,7 +177,7 @@ const handlers = {
     const s = session.surface();
     return s ? [s, [s.positions.buffer, s.triangles.buffer]] : null;
   },
-  [Request.PARTS]: () => parse(session.parts()),
+  [Request.PARTS]: ({ have }) => parse(session.parts(String(have ?? ''))),
   [Request.BUILD_PLAN]: ({ up }) => parse(session.buildPlan(up || 'y')),
   [Request.EXPORT]: ({ name, options }) => {
     const out = options

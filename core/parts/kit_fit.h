@@ -1,0 +1,36 @@
+#pragma once
+//! \file kit_fit.h
+//! Whether a model fits the kits a person owns, and how many balls a model may have so that it
+//! probably does. A fit is judged part by part: every ball and every strut kind (colour and length)
+//! no more than the kits hold. Before a run only an estimate exists (a typical annealed model's
+//! strut mix per ball), so the ball budget keeps a margin and the result is checked again.
+
+#include <string>
+
+#include "core/parts/kits.h"
+#include "core/parts/parts_list.h"
+
+namespace zomeify {
+
+//! The margin a ball budget keeps below what the typical mix says fits (the strut mix of annealed
+//! models varies by about this much from shape to shape).
+inline constexpr double kKitFitMargin = 0.15;
+
+//! The parts of a typical finished model of `balls` balls: 2.7 struts per ball in the mix of the
+//! bunny annealed at 11 cells for 30 s (the page's estimate and the CLI's use the same mix).
+PartsList typical_parts(size_t balls);
+
+//! Every count of `need` at most the same count of `have`.
+bool fits(const PartCounts& need, const PartCounts& have);
+
+//! The most balls a typical model may have with its parts inside `have`, less `margin` (0..0.9).
+size_t balls_that_fit(const PartCounts& have, double margin = kKitFitMargin);
+
+//! After a result with `need` (of `balls` balls) missed `have`: the ball budget for another try,
+//! scaled by the scarcest part's have/need and less `margin`; always below `balls`.
+size_t shrunk_ball_budget(const PartCounts& need, const PartCounts& have, size_t balls, double margin = 0.05);
+
+//! "fits your kits" or "missing with your kits: 12 R1, 3 balls".
+std::string fit_text(const PartCounts& need, const PartCounts& have);
+
+} // namespace zomeify
