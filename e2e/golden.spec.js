@@ -12,9 +12,7 @@ let golden;
 
 test.beforeAll(() => {
   golden = goldenRun(torus, { resolution: 8, proposals: 20000, seed: 7 });
-  console.log(golden.options.proposals > 0
-    ? `golden: zomeify run --proposals 20000 --threads 1 --seed 7: ${golden.balls} balls, ${golden.struts} struts`
-    : `golden: this CLI has no --proposals (rebuild build/native); comparing Z0 only: ${golden.balls} balls`);
+  console.log(`golden: zomeify run --proposals 20000 --threads 1 --seed 7: ${golden.balls} balls, ${golden.struts} struts`);
 });
 
 for (const [how, put] of [['drag and drop', dropFile], ['file picker', pickFile]]) {
