@@ -66,7 +66,7 @@ else
 fi
 
 bash tests/build.sh native || { echo "tests: 0 passed, 1 failed"; exit 1; }
-# anneal_parallel reruns the multi-threaded tests for the ThreadSanitizer lane (ctest -L parallel);
+# The tests labelled parallel (suites *Parallel, tests/CMakeLists.txt) rerun the multi-threaded tests for the TSan lane;
 # the other lanes already run each of them once.
 run_ctest build/native -LE parallel
 lane_done native

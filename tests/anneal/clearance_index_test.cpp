@@ -177,6 +177,7 @@ namespace {
 // must pass the rule the annealer holds every commit to.
 TEST(ClearanceIndex, InitialModelsOfTheSharedMeshesHaveNoClashes)
 {
+    ZOME_REQUIRE_SHARED();
     for (const char* name : {"bunny.obj", "fertility.obj", "rockerarm.obj", "elk.obj", "eight.obj", "3holes.obj",
                              "scorpion.obj", "sphere.obj", "torus.obj", "cube.obj"})
         for (int resolution : {12, 16})

@@ -36,6 +36,7 @@ struct BitHash
 
 TEST(GeomPlatformBits, TorusStagesAreTheSameBitsOnEveryPlatform)
 {
+    ZOME_REQUIRE_SHARED();
     const TriangleMesh mesh = load_surface(test::shared_mesh_path("torus.obj"));
     BitHash positions;
     for (const Vec3& v : mesh.positions)

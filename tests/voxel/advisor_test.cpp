@@ -11,6 +11,7 @@ using namespace zomeify::voxel_test;
 
 TEST(VoxelAdvisor, GenusKeptAtTheAdvisedResolutionForEverySharedMesh)
 {
+    ZOME_REQUIRE_SHARED();
     for (const auto &name : shared_mesh_names())
     {
         SCOPED_TRACE(name);

@@ -60,6 +60,7 @@ double node_rms(const ZomeModel &model, const SurfaceProjector &projector)
 
 TEST(VoxelCarve, KeepsTopologyAndFacesAlongSOnSharedMeshes)
 {
+    ZOME_REQUIRE_SHARED();
     for (const std::string name : {"fertility", "rockerarm", "bunny", "elk", "3holes"})
     {
         SCOPED_TRACE(name);

@@ -38,6 +38,7 @@ TEST(VoxelGridLayout, CentredWithAnEmptyLayer)
 
 TEST(VoxelVoxelize, CubeAlignedWithTheGrid)
 {
+    ZOME_REQUIRE_SHARED();
     const LoadedSurface &cube = shared_surface("cube");
     GridLayoutOptions o;
     o.resolution = 8;
@@ -54,6 +55,7 @@ TEST(VoxelVoxelize, CubeAlignedWithTheGrid)
 
 TEST(VoxelVoxelize, MatchesBruteForceAndCoversTheSurface)
 {
+    ZOME_REQUIRE_SHARED();
     for (const char *name : {"torus", "eight", "bunny"})
     {
         SCOPED_TRACE(name);

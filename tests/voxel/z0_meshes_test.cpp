@@ -19,6 +19,7 @@ using namespace zomeify::voxel_test;
 
 TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
 {
+    ZOME_REQUIRE_SHARED();
     const int resolutions[] = {8, 12, 16, 24};
     std::ostringstream table;
     table << "| mesh | genus S |";

@@ -24,6 +24,7 @@ double stress_seconds()
 
 TEST(AnnealParallel, EightThreadsOnFertilityKeepInvariants)
 {
+    ZOME_REQUIRE_SHARED();
     const auto scene = test::make_anneal_scene("fertility.obj", 16);
     ASSERT_EQ(scene->surface_genus, 4);
     AnnealOptions o;
