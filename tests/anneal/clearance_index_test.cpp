@@ -12,6 +12,7 @@
 #include "core/zome/clearance_rules.h"
 #include "tests/anneal/operators/operator_test_support.h"
 #include "tests/support/zome_fixtures.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {

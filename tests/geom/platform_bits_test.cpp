@@ -15,6 +15,7 @@
 #include "core/geom/closest_point.h"
 #include "core/surface/prepare.h"
 #include "tests/geom/geom_reference.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {

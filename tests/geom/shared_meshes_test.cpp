@@ -10,6 +10,7 @@
 #include "core/geom/inside.h"
 #include "core/surface/prepare.h"
 #include "tests/geom/geom_reference.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {

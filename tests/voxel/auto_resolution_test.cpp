@@ -5,6 +5,7 @@
 
 #include "core/voxel/auto_resolution.h"
 #include "tests/voxel/voxel_test_support.h"
+#include "tests/support/paths.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;

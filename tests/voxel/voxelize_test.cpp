@@ -6,6 +6,7 @@
 #include "core/voxel/tri_box.h"
 #include "core/voxel/voxelize.h"
 #include "tests/voxel/voxel_test_support.h"
+#include "tests/support/paths.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;

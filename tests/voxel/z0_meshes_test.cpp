@@ -13,6 +13,7 @@
 
 #include "core/voxel/initial_model.h"
 #include "tests/voxel/voxel_test_support.h"
+#include "tests/support/paths.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;

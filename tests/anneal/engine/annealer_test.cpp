@@ -14,6 +14,7 @@
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
 #include "tests/anneal/engine/anneal_scene.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {

@@ -13,6 +13,7 @@
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
 #include "tests/anneal/operators/operator_test_support.h"
+#include "tests/support/paths.h"
 
 namespace zomeify
 {
