@@ -3,9 +3,11 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
-import { MESHES } from './support/paths.js';
+import { MESHES, SHARED_MISSING } from './support/paths.js';
 import { goldenRun } from './support/cli.js';
 import { openPage, summary, dropFile, pickFile, expectNoPageErrors } from './support/page.js';
+
+test.skip(Boolean(SHARED_MISSING), SHARED_MISSING);
 
 const torus = path.join(MESHES, 'torus.obj');
 let golden;
