@@ -5,9 +5,11 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { test, expect } from '@playwright/test';
-import { MESHES, OUT } from './support/paths.js';
+import { MESHES, OUT, SHARED_MISSING } from './support/paths.js';
 import { cli } from './support/cli.js';
 import { openPage } from './support/page.js';
+
+test.skip(Boolean(SHARED_MISSING), SHARED_MISSING);
 
 const coverage = (page) => page.evaluate(() => window.zomeify.colourCoverage());
 

@@ -7,8 +7,10 @@ import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
 import { PORT_NO_COI } from './playwright.config.js';
-import { MESHES } from './support/paths.js';
+import { MESHES, SHARED_MISSING } from './support/paths.js';
 import { openPage, summary, dropFile, waitRunning, clickCancelTimed, expectNoPageErrors } from './support/page.js';
+
+test.skip(Boolean(SHARED_MISSING), SHARED_MISSING);
 
 const sphere = [...fs.readFileSync(path.join(MESHES, 'sphere.obj'))];
 

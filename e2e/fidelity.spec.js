@@ -6,9 +6,11 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
-import { MESHES, OUT, ROOT } from './support/paths.js';
+import { MESHES, OUT, ROOT, SHARED_MISSING } from './support/paths.js';
 import { cli } from './support/cli.js';
 import { openPage, summary, dropFile, waitIdle, expectNoPageErrors } from './support/page.js';
+
+test.skip(Boolean(SHARED_MISSING), SHARED_MISSING);
 
 const torus = path.join(MESHES, 'torus.obj');
 const options = { resolution: 8, threads: 1, seed: 7, proposals: 20000, initial_only: false };

@@ -5,8 +5,10 @@
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
-import { MESHES } from './support/paths.js';
+import { MESHES, SHARED_MISSING } from './support/paths.js';
 import { openPage, dropFile, pickFile, waitRunning, waitIdle, expectNoPageErrors } from './support/page.js';
+
+test.skip(Boolean(SHARED_MISSING), SHARED_MISSING);
 
 const mesh = (name) => fs.readFileSync(path.join(MESHES, name));
 

@@ -7,9 +7,11 @@
 #   4. ThreadSanitizer build + the tests labelled `parallel` (ctest -L parallel)
 #   5. libFuzzer smoke run: every fuzz target for ZOME_FUZZ_SECONDS (default 10) seconds
 #   6. e2e/run.sh (Playwright in Chromium) when it exists
+#   0. format: tests/format/check.sh (clang-format --dry-run -Werror over core/ wasm/ tests/), first, once the
+#      tree is formatted (tests/format/enforced exists; ZOME_FORMAT=1 runs it before that)
 # Ends with one line "tests: N passed, M failed" summing the ctest counts, one per fuzz target and the
 # e2e count. For local use, lanes can be skipped: ZOME_SKIP_WASM=1, ZOME_SKIP_ASAN=1, ZOME_SKIP_TSAN=1,
-# ZOME_SKIP_FUZZ=1, ZOME_SKIP_E2E=1, ZOME_SKIP_JS=1; ZOME_SKIP_SANITIZERS=1 skips lanes 3-5.
+# ZOME_SKIP_FUZZ=1, ZOME_SKIP_E2E=1, ZOME_SKIP_JS=1, ZOME_SKIP_FORMAT=1; ZOME_SKIP_SANITIZERS=1 skips lanes 3-5.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 total_pass=0; total_fail=0; status=0
@@ -56,8 +58,15 @@ lane_done() { # lane_done NAME
 print_lane_times() { echo "lane times:"; printf '  %s\n' "${lane_times[@]}"; }
 sanitizers=1; skip ZOME_SKIP_SANITIZERS && sanitizers=0
 
+if ! skip ZOME_SKIP_FORMAT && { [ -f tests/format/enforced ] || [ "${ZOME_FORMAT:-0}" = 1 ]; }; then
+  if bash tests/format/check.sh; then count 1 0; else count 0 1; fi
+  lane_done format
+else
+  echo "format lane: off until the tree is formatted (tests/format/README.md)"
+fi
+
 bash tests/build.sh native || { echo "tests: 0 passed, 1 failed"; exit 1; }
-# anneal_parallel reruns the multi-threaded tests for the ThreadSanitizer lane (ctest -L parallel);
+# The tests labelled parallel (suites *Parallel, tests/CMakeLists.txt) rerun the multi-threaded tests for the TSan lane;
 # the other lanes already run each of them once.
 run_ctest build/native -LE parallel
 lane_done native

@@ -535,13 +535,16 @@ std::string Session::start(const std::string &options_json)
                     "load a mesh first (this model came from a file or link; drop its mesh to run again)");
             if (busy())
                 throw InvalidInputError("a run is in progress");
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+            // The single-threaded page build (zomeify_web_st) runs through run_blocking(): core_worker.js
+            // calls start() only when threadedBuild() is true.
+            (void)options_json;
+            throw InvalidInputError("start() needs the threaded build; this build runs with runBlocking()");
+#else
             const RunOptions options = parse_run_options(options_json);
             if (run_thread_.joinable())
                 run_thread_.join();
             run_ = std::make_unique<RunControl>();
-#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-            execute_run(options, *run_);
-#else
             // The worker's own thread must return to its event loop: it receives Cancel, and
             // pthread_create from another thread is completed there.
             run_->update([](RunProgress &p) { p.state = RunState::Initial; });

@@ -58,7 +58,7 @@ public:
     std::string auto_resolution();
 
     //! Starts a run (Z0, then annealing) on its own thread and returns at once; poll() reports.
-    //! In the single-threaded build use run_blocking().
+    //! The threaded build only: the single-threaded build (zomeify_web_st) throws here; it uses run_blocking().
     std::string start(const std::string &options_json);
     //! The same run on the calling thread; `report` is called about every `interval` seconds
     //! and may ask to stop by returning true.

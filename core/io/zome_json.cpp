@@ -6,7 +6,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/base/errors.h"
-#include "core/io/file_bytes.h"
 #include "core/io/model_check.h"
 
 namespace zomeify {
@@ -88,11 +87,6 @@ std::string write_zome_json(const ZomeModel& model)
         {"stats", std::move(stats)},
     };
     return doc.dump() + "\n";
-}
-
-void write_zome_json_file(const std::string& path, const ZomeModel& model)
-{
-    write_file_bytes(path, write_zome_json(model));
 }
 
 ZomeModel read_zome_json(std::string_view text)
@@ -180,11 +174,6 @@ ZomeModel read_zome_json(std::string_view text)
     }
     check_model(model);
     return model;
-}
-
-ZomeModel read_zome_json_file(const std::string& path)
-{
-    return read_zome_json(read_file_bytes(path));
 }
 
 } // namespace zomeify

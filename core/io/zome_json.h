@@ -13,9 +13,7 @@
 namespace zomeify {
 
 std::string write_zome_json(const ZomeModel& model);
-void write_zome_json_file(const std::string& path, const ZomeModel& model);
 
 ZomeModel read_zome_json(std::string_view text);
-ZomeModel read_zome_json_file(const std::string& path);
 
 } // namespace zomeify

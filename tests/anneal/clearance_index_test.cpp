@@ -12,6 +12,7 @@
 #include "core/zome/clearance_rules.h"
 #include "tests/anneal/operators/operator_test_support.h"
 #include "tests/support/zome_fixtures.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {
@@ -177,6 +178,7 @@ namespace {
 // must pass the rule the annealer holds every commit to.
 TEST(ClearanceIndex, InitialModelsOfTheSharedMeshesHaveNoClashes)
 {
+    ZOME_REQUIRE_SHARED();
     for (const char* name : {"bunny.obj", "fertility.obj", "rockerarm.obj", "elk.obj", "eight.obj", "3holes.obj",
                              "scorpion.obj", "sphere.obj", "torus.obj", "cube.obj"})
         for (int resolution : {12, 16})

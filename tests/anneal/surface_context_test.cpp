@@ -69,7 +69,7 @@ TEST(SurfaceContextCache, EverySampleEqualsTheUncachedOne)
     }
 }
 
-TEST(SurfaceContextCache, ThreadsSharingAContextGetExactValues)
+TEST(SurfaceContextCacheParallel, ThreadsSharingAContextGetExactValues)
 {
     const test::EnergyScene scene =
         test::make_energy_scene(test::make_torus(3.0, 1.2, 48, 24), test::energy_test_transform());

@@ -41,20 +41,20 @@ void expect_exclusive(int threads, int rounds)
     EXPECT_FALSE(torn);
 }
 
-TEST(SpinLocks, ExclusiveUnderContention)
+TEST(SpinLocksParallel, ExclusiveUnderContention)
 {
     expect_exclusive<SpinLock>(4, 20000);
     expect_exclusive<CommitLock>(4, 20000);
 }
 
-TEST(SpinLocks, MoreThreadsThanCoresFinish)
+TEST(SpinLocksParallel, MoreThreadsThanCoresFinish)
 {
     // Eight threads on this machine's two cores: a holder is preempted now and then, and the
     // waiters' yield lets it run again.
     expect_exclusive<CommitLock>(8, 5000);
 }
 
-TEST(SpinLocks, TryLock)
+TEST(SpinLocksParallel, TryLock)
 {
     CommitLock lock;
     EXPECT_TRUE(lock.try_lock());

@@ -78,6 +78,7 @@ TEST(AssemblyPlan, CheckPlanFindsFaults)
 
 TEST(AssemblyPlan, PaperBunnyBothOrders)
 {
+    ZOME_REQUIRE_SHARED();
     const std::string path = test::shared_path("data/vef/bunny.vef");
     if (!std::filesystem::exists(path))
         GTEST_SKIP() << "no " << path;
@@ -112,6 +113,7 @@ TEST(AssemblyPlan, PaperBunnyBothOrders)
 
 TEST(AssemblyPlan, SharedMeshesInitialModels)
 {
+    ZOME_REQUIRE_SHARED();
     const char* meshes[] = {"3holes", "bunny", "cube", "eight", "elk", "fertility", "rockerarm", "scorpion", "sphere", "torus"};
     for (const char* name : meshes)
     {

@@ -15,6 +15,7 @@
 #include "core/geom/closest_point.h"
 #include "core/surface/prepare.h"
 #include "tests/geom/geom_reference.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {
@@ -36,6 +37,7 @@ struct BitHash
 
 TEST(GeomPlatformBits, TorusStagesAreTheSameBitsOnEveryPlatform)
 {
+    ZOME_REQUIRE_SHARED();
     const TriangleMesh mesh = load_surface(test::shared_mesh_path("torus.obj"));
     BitHash positions;
     for (const Vec3& v : mesh.positions)

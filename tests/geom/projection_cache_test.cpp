@@ -97,7 +97,7 @@ TEST(GeomProjectionCache, StaysWithinItsCapacity)
     EXPECT_EQ(hot.stats().hits, queries.size());
 }
 
-TEST(GeomProjectionCache, SafeAndExactUnderFourThreads)
+TEST(GeomProjectionCacheParallel, SafeAndExactUnderFourThreads)
 {
     const SurfaceProjector projector(test::make_torus(1.0, 0.3, 48, 24));
     const std::vector<Query> queries = grid_queries(14, 0.2);

@@ -10,6 +10,7 @@
 #include "core/geom/inside.h"
 #include "core/surface/prepare.h"
 #include "tests/geom/geom_reference.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {
@@ -20,6 +21,7 @@ class GeomSharedMeshes : public ::testing::TestWithParam<std::string>
 
 TEST_P(GeomSharedMeshes, ProjectionMatchesBruteForceWithOutwardUnitNormals)
 {
+    ZOME_REQUIRE_SHARED();
     const TriangleMesh mesh = load_surface(test::shared_mesh_path(GetParam()));
     const SurfaceProjector projector(mesh);
     const double diagonal = test::bbox_diagonal(mesh);
@@ -39,6 +41,7 @@ TEST_P(GeomSharedMeshes, ProjectionMatchesBruteForceWithOutwardUnitNormals)
 
 TEST_P(GeomSharedMeshes, ProjectionMatchesBruteForceOnAndFarFromTheSurface)
 {
+    ZOME_REQUIRE_SHARED();
     // The float search with exact refinement (TriangleBlock estimates) against brute force where
     // its error bounds are tightest (points on S: distance 0, ties between the triangles around a
     // vertex or along an edge) and loosest (far away: the float magnitude grows with the
@@ -75,6 +78,7 @@ TEST_P(GeomSharedMeshes, ProjectionMatchesBruteForceOnAndFarFromTheSurface)
 
 TEST_P(GeomSharedMeshes, InsideAgreesWithRayParity)
 {
+    ZOME_REQUIRE_SHARED();
     const TriangleMesh mesh = load_surface(test::shared_mesh_path(GetParam()));
     const SurfaceProjector projector(mesh);
     const InsideTest inside(projector);

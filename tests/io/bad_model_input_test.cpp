@@ -92,6 +92,7 @@ TEST(BadModelInput, JsonProblemsAreNamed)
 
 TEST(BadModelInput, TruncatedAndMutatedFilesNeverCrash)
 {
+    ZOME_REQUIRE_SHARED();
     const std::string vef = read_file_bytes(test::shared_path("data/vef/bunny.vef"));
     const std::string json = write_zome_json(read_vef(vef));
     std::mt19937 rng(12345);

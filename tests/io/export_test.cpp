@@ -37,6 +37,7 @@ namespace
 
 TEST(Export, GlbOfTheBunnyLoadsBackWithOneMeshPerKind)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
     tinygltf::Model m;
     ASSERT_TRUE(load_glb(write_glb(bunny), m));
@@ -64,6 +65,7 @@ TEST(Export, GlbOfTheBunnyLoadsBackWithOneMeshPerKind)
 
 TEST(Export, GlbIsInMetresOnTheTableWithNamedNodes)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
     tinygltf::Model m;
     ASSERT_TRUE(load_glb(write_glb(bunny), m));
@@ -99,6 +101,7 @@ TEST(Export, GlbIsInMetresOnTheTableWithNamedNodes)
 
 TEST(Export, ObjOfTheBunnyParsesBack)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
     const ObjExport out = write_obj(bunny, "bunny.mtl");
     EXPECT_NE(out.obj.find("mtllib bunny.mtl"), std::string::npos);
@@ -120,6 +123,7 @@ TEST(Export, ObjOfTheBunnyParsesBack)
 
 TEST(Export, ObjInMetresOnRequest)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
     const std::string mm = write_obj(bunny, "b.mtl").obj, m = write_obj(bunny, "b.mtl", ObjUnits::Metres).obj;
     EXPECT_NE(m.find("# units: metres (m)"), std::string::npos);
@@ -142,6 +146,7 @@ TEST(Export, ObjInMetresOnRequest)
 
 TEST(Export, CsvAndFilesByExtension)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
     const std::string csv = write_model_buffer(bunny, "parts.csv");
     EXPECT_NE(csv.find("PST-B0-BLU,B0,blue,46.27,179"), std::string::npos);

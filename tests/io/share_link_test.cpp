@@ -66,6 +66,7 @@ std::string v1_icosahedron_body()
 
 TEST(ShareLink, BunnyRoundTripAndLength)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel b = bunny();
     const std::string link = encode_share_link(b);
     EXPECT_LE(link.size(), 1900u) << "the paper's bunny (968 struts) must fit in 1,900 characters";
@@ -95,6 +96,7 @@ TEST(ShareLink, FacesTransformAndComponentsSurvive)
 
 TEST(ShareLink, ModelLinkModelThroughTheCliFormats)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel b = bunny();
     const std::string path = test::temp_path("from_link.zome.json");
     write_model_file(path, decode_share_link(encode_share_link(b)));
@@ -153,6 +155,7 @@ TEST(ShareLink, HostileLinksGiveClearErrors)
 
 TEST(ShareLink, TruncatedAndRandomLinksNeverCrash)
 {
+    ZOME_REQUIRE_SHARED();
     const std::string good = encode_share_link(bunny());
     for (size_t cut = 0; cut < good.size(); cut += 7)
         EXPECT_THROW(decode_share_link(good.substr(0, cut)), InvalidInputError) << "cut at " << cut;
@@ -251,6 +254,7 @@ TEST(ShareLink, OtherFacesTravelExplicitly)
 // surface's normals, as tests/score/recover_faces_test.cpp does): the faces cost a few exceptions.
 TEST(ShareLink, PapersBunnyWithItsFacesStaysShort)
 {
+    ZOME_REQUIRE_SHARED();
     ZomeModel b = bunny();
     const SurfaceProjector surface(load_surface(test::shared_path("data/meshes/bunny.obj")));
     b.transform = fit_translation(b, surface, 0.1179);

@@ -33,6 +33,7 @@ ZomeModel one_b1()
 
 TEST(Vef, ThePapersBunnyReadsWithStandardStruts)
 {
+    ZOME_REQUIRE_SHARED();
     VefReadInfo info;
     const ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"), &info);
     EXPECT_EQ(info.phi_power, 3); // drawn at 2φ³ per b0, one φ step above vZome's scale
@@ -57,6 +58,7 @@ TEST(Vef, DesignMinimalFileIsOneB1)
 
 TEST(Vef, WriteReadRoundTripIsIdentical)
 {
+    ZOME_REQUIRE_SHARED();
     ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
     const std::string text = write_vef(bunny);
     VefReadInfo info;
@@ -73,6 +75,7 @@ TEST(Vef, WriteReadRoundTripIsIdentical)
 
 TEST(Vef, OtherReferenceFilesRead)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel dodeca = read_vef_file(test::shared_path("data/vef/dodecahedron.vef"));
     EXPECT_EQ(dodeca.nodes.size(), 20u);
     EXPECT_EQ(dodeca.struts.size(), 30u);

@@ -11,6 +11,7 @@ using namespace zomeify;
 
 TEST(ZomeJson, RoundTripIsIdentical)
 {
+    ZOME_REQUIRE_SHARED();
     ZomeModel bunny = read_vef_file(test::shared_path("data/vef/bunny.vef"));
     bunny.transform.scale = 0.1179;
     bunny.transform.translation = {0.25, -1.0 / 3.0, 1e-7};
@@ -40,6 +41,7 @@ TEST(ZomeJson, LayoutFollowsTheDesign)
 
 TEST(ZomeJson, FilesConvertBothWays)
 {
+    ZOME_REQUIRE_SHARED();
     const ZomeModel bunny = read_model_file(test::shared_path("data/vef/bunny.vef"));
     const std::string json_path = test::temp_path("bunny.zome.json"), vef_path = test::temp_path("bunny.vef");
     write_model_file(json_path, bunny);

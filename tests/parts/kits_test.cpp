@@ -81,6 +81,7 @@ TEST(KitPlan, NeedsTwoCreator1)
 
 TEST(KitPlan, ThePapersBunnyIsOptimal)
 {
+    ZOME_REQUIRE_SHARED();
     const PartsList parts = parts_list(read_vef_file(test::shared_path("data/vef/bunny.vef")));
     const KitPlan plan = plan_kits(parts);
     EXPECT_EQ(plan_string(plan), "4xcreator3 1xcreator1 ");
@@ -103,6 +104,7 @@ TEST(KitPlan, ThePapersBunnyIsOptimal)
 
 TEST(KitPlan, MissingWithOwnedKits)
 {
+    ZOME_REQUIRE_SHARED();
     const PartsList parts = parts_list(read_vef_file(test::shared_path("data/vef/bunny.vef")));
     const OwnedKits owned = parse_owned_kits("creator3, 2 x Creator 1");
     ASSERT_EQ(owned.size(), 2u);

@@ -10,6 +10,7 @@ using namespace zomeify;
 
 TEST(PartsList, ThePapersBunny)
 {
+    ZOME_REQUIRE_SHARED();
     const PartsList parts = parts_list(read_vef_file(test::shared_path("data/vef/bunny.vef")));
     EXPECT_EQ(parts.balls, 392u);
     const size_t expected[] = {179, 158, 5, 255, 119, 18, 149, 78, 7};

@@ -79,6 +79,7 @@ TEST(RecoverFaces, CentroidNormalsSufficeForConvexModels)
 
 TEST(RecoverFaces, PapersBunnyHasItsPublishedSurface)
 {
+    ZOME_REQUIRE_SHARED();
     ZomeModel bunny = read_model_file(test::shared_path("data/vef/bunny.vef"));
     const SurfaceProjector surface(load_surface(test::shared_path("data/meshes/bunny.obj")));
     // design.md §6: the paper fits bunny.obj with b0 = 0.1179 mesh units and no rotation.

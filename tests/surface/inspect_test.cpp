@@ -85,6 +85,7 @@ CliResult run_cli(const std::string &arguments)
 
 TEST(InspectCli, JsonMatchesReadmeForAllSharedMeshes)
 {
+    ZOME_REQUIRE_SHARED();
     struct Expected
     {
         const char *file;
@@ -115,6 +116,7 @@ TEST(InspectCli, JsonMatchesReadmeForAllSharedMeshes)
 
 TEST(InspectCli, Table)
 {
+    ZOME_REQUIRE_SHARED();
     const CliResult r = run_cli("inspect '" + test::shared_path("data/meshes/eight.obj") + "'");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("genus           2\n"), std::string::npos) << r.out;

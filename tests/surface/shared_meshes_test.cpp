@@ -33,6 +33,7 @@ const SharedMesh shared_meshes[] = {
 
 TEST(SurfaceSharedMeshes, ReportMatchesReadme)
 {
+    ZOME_REQUIRE_SHARED();
     for (const SharedMesh &m : shared_meshes)
     {
         SCOPED_TRACE(m.file);
@@ -57,6 +58,7 @@ TEST(SurfaceSharedMeshes, ReportMatchesReadme)
 
 TEST(SurfaceSharedMeshes, BoundingBoxOfBunny)
 {
+    ZOME_REQUIRE_SHARED();
     const SurfaceReport r = diagnose(read_mesh_file(shared_path("data/meshes/bunny.obj")));
     EXPECT_NEAR(r.bbox_min[0], -0.7757, 1e-4);
     EXPECT_NEAR(r.bbox_max[2], 0.5991, 1e-4);
@@ -64,6 +66,7 @@ TEST(SurfaceSharedMeshes, BoundingBoxOfBunny)
 
 TEST(SurfaceSharedMeshes, InvertedCopyIsFlippedBack)
 {
+    ZOME_REQUIRE_SHARED();
     // Every face of rockerarm reversed: the repair must flip all of them and nothing else.
     const PolygonSoup soup = reversed(read_mesh_file(shared_path("data/meshes/rockerarm.obj")));
     const PreparedSurface prepared = prepare_surface(soup);
@@ -74,6 +77,7 @@ TEST(SurfaceSharedMeshes, InvertedCopyIsFlippedBack)
 
 TEST(SurfaceSharedMeshes, LoadSurface)
 {
+    ZOME_REQUIRE_SHARED();
     const TriangleMesh mesh = load_surface(shared_path("data/meshes/torus.obj"));
     EXPECT_EQ(mesh.positions.size(), 2304u);
     EXPECT_EQ(mesh.triangles.size(), 4608u);

@@ -5,12 +5,14 @@
 
 #include "core/voxel/advisor.h"
 #include "tests/voxel/voxel_test_support.h"
+#include "tests/support/paths.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
 
 TEST(VoxelAdvisor, GenusKeptAtTheAdvisedResolutionForEverySharedMesh)
 {
+    ZOME_REQUIRE_SHARED();
     for (const auto &name : shared_mesh_names())
     {
         SCOPED_TRACE(name);

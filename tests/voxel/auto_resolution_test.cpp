@@ -5,12 +5,14 @@
 
 #include "core/voxel/auto_resolution.h"
 #include "tests/voxel/voxel_test_support.h"
+#include "tests/support/paths.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
 
 TEST(AutoResolution, CoarsestGridKeepingTheGenusWithEnoughBallsOnEverySharedMesh)
 {
+    ZOME_REQUIRE_SHARED();
     for (const auto &name : shared_mesh_names())
     {
         SCOPED_TRACE(name);
@@ -51,6 +53,7 @@ TEST(AutoResolution, CoarsestGridKeepingTheGenusWithEnoughBallsOnEverySharedMesh
 
 TEST(AutoResolution, SaysSoWhenNoGridKeepsTheGenus)
 {
+    ZOME_REQUIRE_SHARED();
     // Asking a genus-0 sphere for genus 1: no grid keeps it; the coarsest grid with enough balls
     // is taken and the message names the search.
     const LoadedSurface &s = shared_surface("sphere");

@@ -13,6 +13,7 @@
 #include "core/voxel/voxelize.h"
 #include "tests/support/geom_fixtures.h"
 #include "tests/voxel/voxel_test_support.h"
+#include "tests/support/paths.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
@@ -60,6 +61,7 @@ double node_rms(const ZomeModel &model, const SurfaceProjector &projector)
 
 TEST(VoxelCarve, KeepsTopologyAndFacesAlongSOnSharedMeshes)
 {
+    ZOME_REQUIRE_SHARED();
     for (const std::string name : {"fertility", "rockerarm", "bunny", "elk", "3holes"})
     {
         SCOPED_TRACE(name);

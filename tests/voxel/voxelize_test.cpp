@@ -6,6 +6,7 @@
 #include "core/voxel/tri_box.h"
 #include "core/voxel/voxelize.h"
 #include "tests/voxel/voxel_test_support.h"
+#include "tests/support/paths.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
@@ -38,6 +39,7 @@ TEST(VoxelGridLayout, CentredWithAnEmptyLayer)
 
 TEST(VoxelVoxelize, CubeAlignedWithTheGrid)
 {
+    ZOME_REQUIRE_SHARED();
     const LoadedSurface &cube = shared_surface("cube");
     GridLayoutOptions o;
     o.resolution = 8;
@@ -54,6 +56,7 @@ TEST(VoxelVoxelize, CubeAlignedWithTheGrid)
 
 TEST(VoxelVoxelize, MatchesBruteForceAndCoversTheSurface)
 {
+    ZOME_REQUIRE_SHARED();
     for (const char *name : {"torus", "eight", "bunny"})
     {
         SCOPED_TRACE(name);

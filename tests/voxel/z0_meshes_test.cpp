@@ -13,12 +13,14 @@
 
 #include "core/voxel/initial_model.h"
 #include "tests/voxel/voxel_test_support.h"
+#include "tests/support/paths.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
 
 TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
 {
+    ZOME_REQUIRE_SHARED();
     const int resolutions[] = {8, 12, 16, 24};
     std::ostringstream table;
     table << "| mesh | genus S |";

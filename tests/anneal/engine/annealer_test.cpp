@@ -14,6 +14,7 @@
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
 #include "tests/anneal/engine/anneal_scene.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {
@@ -42,6 +43,7 @@ constexpr uint64_t kBunnyGoldenHash = 0xe770a293fa7dba84ULL;
 
 TEST(Annealer, OneThreadFixedSeedIsBitIdentical)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     Annealer first(scene.z0, *scene.context, deterministic_options(30000));
     const AnnealResult a = first.run();
@@ -59,6 +61,7 @@ TEST(Annealer, OneThreadFixedSeedIsBitIdentical)
 
 TEST(Annealer, RunKeepsEveryInvariantAndExactSums)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     AnnealOptions o = deterministic_options(40000);
     o.seed = 3;
@@ -92,6 +95,7 @@ TEST(Annealer, RunKeepsEveryInvariantAndExactSums)
 
 TEST(Annealer, ShortRunEndsWithoutFoldOversWhereZ0HasTheGenus)
 {
+    ZOME_REQUIRE_SHARED();
 #ifdef ZOME_SANITIZED
     GTEST_SKIP() << "a quality figure, not a memory check: 10x slower under a sanitizer";
 #endif
@@ -113,6 +117,7 @@ TEST(Annealer, ShortRunEndsWithoutFoldOversWhereZ0HasTheGenus)
 
 TEST(Annealer, OperatorWeightsDecideWhatIsProposed)
 {
+    ZOME_REQUIRE_SHARED();
     // Only MOVNODE and REMDIAG, 3 to 1: the workers draw with the options' weights.
     const test::AnnealScene& scene = bunny8();
     AnnealOptions o = deterministic_options(8000);
@@ -135,6 +140,7 @@ TEST(Annealer, OperatorWeightsDecideWhatIsProposed)
 
 TEST(Annealer, CancelInProgressStopsAndKeepsAValidBestModel)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     AnnealOptions o;
     o.threads = 1;
@@ -156,6 +162,7 @@ TEST(Annealer, CancelInProgressStopsAndKeepsAValidBestModel)
 
 TEST(AnnealParallel, SnapshotsWhileThreadsRunAreValid)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     AnnealOptions o;
     o.threads = 2;
@@ -188,6 +195,7 @@ TEST(AnnealParallel, SnapshotsWhileThreadsRunAreValid)
 
 TEST(AnnealParallel, ProposalBudgetIsSharedByTheThreads)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     AnnealOptions o = deterministic_options(20000);
     o.threads = 4;

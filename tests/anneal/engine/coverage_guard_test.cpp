@@ -13,6 +13,7 @@
 #include "core/mesh/model_convert.h"
 #include "tests/anneal/engine/anneal_scene.h"
 #include "tests/anneal/operators/operator_test_support.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {
@@ -25,6 +26,7 @@ const test::AnnealScene& bunny8()
 
 TEST(CoverageGuard, SamplesCoverTheSurfaceAtTheirSpacing)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     const ZomeMesh mesh = from_model(scene.z0);
     const CoverageOptions options{2.5, 0.5};
@@ -40,6 +42,7 @@ TEST(CoverageGuard, SamplesCoverTheSurfaceAtTheirSpacing)
 
 TEST(CoverageGuard, OffAdmitsEverythingAndHoldsNoSamples)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     const ZomeMesh mesh = from_model(scene.z0);
     CoverageGuard guard(*scene.context, mesh, CoverageOptions{0.0, 0.5});
@@ -52,6 +55,7 @@ TEST(CoverageGuard, OffAdmitsEverythingAndHoldsNoSamples)
 
 TEST(CoverageGuard, RejectsBadOptions)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     const ZomeMesh mesh = from_model(scene.z0);
     EXPECT_THROW(CoverageGuard(*scene.context, mesh, CoverageOptions{-1.0, 0.5}), InvalidInputError);
@@ -64,6 +68,7 @@ TEST(CoverageGuard, RejectsBadOptions)
 // recount from scratch, and look for a sample covered before and not after.
 TEST(CoverageGuard, RefusesExactlyTheChangesThatUncoverASample)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     ZomeMesh mesh = from_model(scene.z0);
     CoverageGuard guard(*scene.context, mesh, CoverageOptions{1.0, 0.5});
@@ -111,6 +116,7 @@ TEST(CoverageGuard, RefusesExactlyTheChangesThatUncoverASample)
 // the guard did refuse commits (so the check is live); compaction renumbered the nodes meanwhile.
 TEST(CoverageGuard, AnnealerNeverUncoversASample)
 {
+    ZOME_REQUIRE_SHARED();
     const test::AnnealScene& scene = bunny8();
     AnnealOptions o;
     o.threads = 1;

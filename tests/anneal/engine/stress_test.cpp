@@ -11,6 +11,7 @@
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
 #include "tests/anneal/engine/anneal_scene.h"
+#include "tests/support/paths.h"
 
 namespace zomeify {
 namespace {
@@ -24,6 +25,7 @@ double stress_seconds()
 
 TEST(AnnealParallel, EightThreadsOnFertilityKeepInvariants)
 {
+    ZOME_REQUIRE_SHARED();
     const auto scene = test::make_anneal_scene("fertility.obj", 16);
     ASSERT_EQ(scene->surface_genus, 4);
     AnnealOptions o;

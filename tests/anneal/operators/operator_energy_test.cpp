@@ -13,6 +13,7 @@
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
 #include "tests/anneal/operators/operator_test_support.h"
+#include "tests/support/paths.h"
 
 namespace zomeify
 {
@@ -85,6 +86,7 @@ TEST(OperatorEnergy, IncrementalDeltaEqualsFullRecomputationForEveryKind) { chec
 // near the change through a grid and the points' nearest faces.
 TEST(OperatorEnergy, SurfaceTermIncrementalEqualsFullRecomputationForEveryKind)
 {
+    ZOME_REQUIRE_SHARED();
     check_every_kind(10.0);
 }
 
@@ -152,6 +154,7 @@ void print_rates(size_t cache_capacity)
 
 TEST(OperatorEnergy, ProposalRatePerKind)
 {
+    ZOME_REQUIRE_SHARED();
     print_rates(ProjectionCacheOptions().capacity); // the default
     print_rates(size_t{1} << 22);                   // every sample of the measurement fits
 }
