@@ -11,18 +11,17 @@
 
 using emscripten::val;
 
-namespace zomeify::web
-{
+namespace zomeify::web {
 
-namespace
-{
+namespace {
 
-template <class T> val typed_copy(const char *type, const std::vector<T> &data)
+template <class T>
+val typed_copy(const char* type, const std::vector<T>& data)
 {
     return val::global(type).new_(emscripten::typed_memory_view(data.size(), data.data()));
 }
 
-val error_object(const std::string &message)
+val error_object(const std::string& message)
 {
     val out = val::object();
     out.set("ok", false);
@@ -33,35 +32,35 @@ val error_object(const std::string &message)
 class WebSession
 {
 public:
-    std::string load_mesh(const std::string &bytes, const std::string &name) { return s_.load_mesh(bytes, name); }
-    std::string load_model(const std::string &bytes, const std::string &name) { return s_.load_model(bytes, name); }
-    std::string open_link(const std::string &link) { return s_.open_link(link); }
+    std::string load_mesh(const std::string& bytes, const std::string& name) { return s_.load_mesh(bytes, name); }
+    std::string load_model(const std::string& bytes, const std::string& name) { return s_.load_model(bytes, name); }
+    std::string open_link(const std::string& link) { return s_.open_link(link); }
     std::string estimate(int resolution) { return s_.estimate(resolution); }
     std::string estimate_size(double size_cm) { return s_.estimate_size(size_cm); }
-    std::string kit_check(const std::string &have, double balls) const { return s_.kit_check(have, balls); }
-    std::string fit_kits(const std::string &have, int max_resolution, bool shrink)
+    std::string kit_check(const std::string& have, double balls) const { return s_.kit_check(have, balls); }
+    std::string fit_kits(const std::string& have, int max_resolution, bool shrink)
     {
         return s_.fit_kits(have, max_resolution, shrink);
     }
     std::string auto_resolution() { return s_.auto_resolution(); }
-    std::string start(const std::string &options) { return s_.start(options); }
-    std::string run_blocking(const std::string &options, val callback, double interval)
+    std::string start(const std::string& options) { return s_.start(options); }
+    std::string run_blocking(const std::string& options, val callback, double interval)
     {
         return s_.run_blocking(
-            options, [&](const RunProgress &p) { return callback(p.json()).as<bool>(); }, interval);
+            options, [&](const RunProgress& p) { return callback(p.json()).as<bool>(); }, interval);
     }
     void cancel() { s_.cancel(); }
     std::string progress() const { return s_.progress().json(); }
     double model_version() const { return static_cast<double>(s_.model_version()); }
-    std::string parts(const std::string &have) const { return s_.parts(have); }
-    std::string build_plan(const std::string &up) const { return s_.build_plan(up); }
+    std::string parts(const std::string& have) const { return s_.parts(have); }
+    std::string build_plan(const std::string& up) const { return s_.build_plan(up); }
     std::string link() const { return s_.link(); }
     std::string summary() const { return s_.summary(); }
 
     //! {ok, bytes: Uint8Array} or {ok:false, error}.
-    val export_model(const std::string &name) const { return export_model_with(name, true, "mm"); }
+    val export_model(const std::string& name) const { return export_model_with(name, true, "mm"); }
     //! The same with the writers' options: faces in a VEF, OBJ units ("mm" or "m").
-    val export_model_with(const std::string &name, bool vef_faces, const std::string &obj_units) const
+    val export_model_with(const std::string& name, bool vef_faces, const std::string& obj_units) const
     {
         try
         {
@@ -70,10 +69,10 @@ public:
             out.set("ok", true);
             out.set("bytes", val::global("Uint8Array")
                                  .new_(emscripten::typed_memory_view(bytes.size(),
-                                                                     reinterpret_cast<const uint8_t *>(bytes.data()))));
+                                                                     reinterpret_cast<const uint8_t*>(bytes.data()))));
             return out;
         }
-        catch (const std::exception &e)
+        catch (const std::exception& e)
         {
             return error_object(e.what());
         }
@@ -88,14 +87,14 @@ public:
         const ZomeModel m = s_.model();
         std::vector<float> positions;
         positions.reserve(3 * m.nodes.size());
-        for (const ZVec &p : m.nodes)
+        for (const ZVec& p : m.nodes)
             for (int k = 0; k < 3; ++k)
                 positions.push_back(static_cast<float>(p.coord(k)));
         std::vector<uint32_t> struts;
         std::vector<uint8_t> kinds;
         struts.reserve(2 * m.struts.size());
         kinds.reserve(m.struts.size());
-        for (const auto &s : m.struts)
+        for (const auto& s : m.struts)
         {
             struts.push_back(s[0]);
             struts.push_back(s[1]);
@@ -103,7 +102,7 @@ public:
             kinds.push_back(id < 0 ? uint8_t{255} : static_cast<uint8_t>(vector_kind(id)));
         }
         std::vector<uint32_t> triangles;
-        for (const auto &f : m.faces)
+        for (const auto& f : m.faces)
             for (size_t i = 1; i + 1 < f.size(); ++i)
                 triangles.insert(triangles.end(), {f[0], f[i], f[i + 1]});
         val out = val::object();
@@ -123,17 +122,17 @@ public:
     //! The input surface in mesh units, or null.
     val surface() const
     {
-        const TriangleMesh *mesh = s_.surface();
+        const TriangleMesh* mesh = s_.surface();
         if (!mesh)
             return val::null();
         std::vector<float> positions;
         positions.reserve(3 * mesh->positions.size());
-        for (const Vec3 &p : mesh->positions)
+        for (const Vec3& p : mesh->positions)
             for (int k = 0; k < 3; ++k)
                 positions.push_back(static_cast<float>(p[k]));
         std::vector<uint32_t> triangles;
         triangles.reserve(3 * mesh->triangles.size());
-        for (const auto &t : mesh->triangles)
+        for (const auto& t : mesh->triangles)
             triangles.insert(triangles.end(), t.begin(), t.end());
         val out = val::object();
         out.set("positions", typed_copy("Float32Array", positions));
@@ -145,10 +144,7 @@ private:
     Session s_;
 };
 
-int max_threads()
-{
-    return max_run_threads();
-}
+int max_threads() { return max_run_threads(); }
 
 bool threaded_build()
 {

@@ -1,7 +1,6 @@
 #include "wasm/run_options.h"
 
-namespace zomeify::web
-{
+namespace zomeify::web {
 
 int max_run_threads()
 {

@@ -7,17 +7,13 @@
 
 #include "core/pipeline/run_settings.h"
 
-namespace zomeify::web
-{
+namespace zomeify::web {
 
 using RunOptions = RunSettings;
 
 //! run_settings_from_json(): missing keys keep their defaults; InvalidInputError for a value of the
 //! wrong type or out of bounds.
-inline RunOptions parse_run_options(const std::string &json)
-{
-    return run_settings_from_json(json);
-}
+inline RunOptions parse_run_options(const std::string& json) { return run_settings_from_json(json); }
 
 //! The largest number of annealing threads this build can start without deadlocking
 //! (PTHREAD_POOL_SIZE minus the run's own thread; 1 in the single-threaded build).

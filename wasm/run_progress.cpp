@@ -4,13 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
-namespace zomeify::web
-{
+namespace zomeify::web {
 
-namespace
-{
+namespace {
 
-const char *state_name(RunState s)
+const char* state_name(RunState s)
 {
     switch (s)
     {

@@ -11,8 +11,7 @@
 
 #include "wasm/run_options.h"
 
-namespace zomeify::web
-{
+namespace zomeify::web {
 
 enum class RunState : uint8_t
 {
@@ -63,15 +62,16 @@ class RunControl
 public:
     void request_cancel() { cancel_.store(true); }
     bool cancel_requested() const { return cancel_.load(); }
-    const std::atomic<bool> &cancel_flag() const { return cancel_; }
-    std::atomic<bool> &cancel_flag() { return cancel_; }
+    const std::atomic<bool>& cancel_flag() const { return cancel_; }
+    std::atomic<bool>& cancel_flag() { return cancel_; }
 
     RunProgress get() const
     {
         std::lock_guard lock(mutex_);
         return progress_;
     }
-    template <class F> void update(F &&change)
+    template <class F>
+    void update(F&& change)
     {
         {
             std::lock_guard lock(mutex_);
@@ -82,7 +82,7 @@ public:
 
     //! Single-threaded build: the run calls back into the worker's JS (which cannot receive
     //! messages meanwhile) every `interval` seconds; a true answer asks the run to stop.
-    void set_reporter(std::function<bool(const RunProgress &)> reporter, double interval)
+    void set_reporter(std::function<bool(const RunProgress&)> reporter, double interval)
     {
         reporter_ = std::move(reporter);
         interval_ = interval;
@@ -94,7 +94,7 @@ private:
     std::atomic<bool> cancel_{false};
     mutable std::mutex mutex_;
     RunProgress progress_;
-    std::function<bool(const RunProgress &)> reporter_;
+    std::function<bool(const RunProgress&)> reporter_;
     double interval_ = 0.25;
     double last_report_ = -1.0;
 };

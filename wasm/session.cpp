@@ -34,8 +34,7 @@
 #include "core/zome/real_sizes.h"
 #include "core/zome/slots.h"
 
-namespace zomeify::web
-{
+namespace zomeify::web {
 
 //! The prepared input surface and the queries built on it (immutable once loaded).
 struct LoadedSurface
@@ -47,51 +46,48 @@ struct LoadedSurface
 
     InsidePredicate is_inside() const
     {
-        return [this](const Vec3 &p) { return inside->is_inside(p); };
+        return [this](const Vec3& p) { return inside->is_inside(p); };
     }
 };
 
-namespace
-{
+namespace {
 
-std::string error_json(const std::string &message)
-{
-    return nlohmann::json{{"ok", false}, {"error", message}}.dump();
-}
+std::string error_json(const std::string& message) { return nlohmann::json{{"ok", false}, {"error", message}}.dump(); }
 
-std::string extension_of(const std::string &name)
+std::string extension_of(const std::string& name)
 {
     const size_t dot = name.find_last_of('.');
     std::string ext = dot == std::string::npos ? "" : name.substr(dot);
-    for (char &c : ext)
+    for (char& c : ext)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return ext;
 }
 
-bool is_model_file_name(const std::string &name)
+bool is_model_file_name(const std::string& name)
 {
     const std::string ext = extension_of(name);
     return ext == ".json" || ext == ".vef";
 }
 
 //! Runs `body`, turning every exception into {ok:false, error} (bad input must never escape).
-template <class F> std::string guarded(F &&body)
+template <class F>
+std::string guarded(F&& body)
 {
     try
     {
         return body();
     }
-    catch (const std::bad_alloc &)
+    catch (const std::bad_alloc&)
     {
         return error_json("out of memory: the input is too large for the browser");
     }
-    catch (const std::exception &e)
+    catch (const std::exception& e)
     {
         return error_json(e.what());
     }
 }
 
-InitialModelOptions z0_options(int resolution, long long genus, const SurfaceProjector &projector, double b1 = 0.0)
+InitialModelOptions z0_options(int resolution, long long genus, const SurfaceProjector& projector, double b1 = 0.0)
 {
     InitialModelOptions o;
     o.resolution = resolution;
@@ -104,14 +100,14 @@ InitialModelOptions z0_options(int resolution, long long genus, const SurfacePro
 // A rough bill for a finished model of `balls` balls from Z0 across `cells` B1 cells: its size at
 // real scale, and the kits to buy for the strut mix of a typical finished model (kit_fit.h's
 // typical_parts, the mix the CLI's kit estimate uses), planned as `zomeify parts` plans.
-nlohmann::json size_estimate(const InitialModel &z0, size_t balls)
+nlohmann::json size_estimate(const InitialModel& z0, size_t balls)
 {
-    const auto &dims = z0.report.grid.dims;
+    const auto& dims = z0.report.grid.dims;
     const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
     const KitPlan plan = plan_kits(typical_parts(balls));
     size_t kits = 0;
     std::string text;
-    for (const auto &[kit, n] : plan.kits)
+    for (const auto& [kit, n] : plan.kits)
     {
         kits += n;
         text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
@@ -119,7 +115,7 @@ nlohmann::json size_estimate(const InitialModel &z0, size_t balls)
     return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0}, {"kits", kits}, {"kit_plan", text}};
 }
 
-nlohmann::json counts_json(const PartCounts &c)
+nlohmann::json counts_json(const PartCounts& c)
 {
     nlohmann::json j = nlohmann::json::object();
     for (int k = 0; k < kStrutKindCount; ++k)
@@ -128,16 +124,16 @@ nlohmann::json counts_json(const PartCounts &c)
     return j;
 }
 
-std::string owned_text(const OwnedKits &owned)
+std::string owned_text(const OwnedKits& owned)
 {
     std::string s;
-    for (const auto &[kit, n] : owned)
+    for (const auto& [kit, n] : owned)
         s += (s.empty() ? "" : " + ") + std::to_string(n) + " x " + std::string(kit->name);
     return s;
 }
 
 // The longest side of the mesh's bounding box, the length --size-cm scales.
-double longest_side(const TriangleMesh &mesh)
+double longest_side(const TriangleMesh& mesh)
 {
     const auto [lo, hi] = bounding_box(mesh);
     return (hi - lo).maxCoeff();
@@ -154,78 +150,68 @@ Session::~Session()
         run_thread_.join();
 }
 
-bool Session::busy() const
+bool Session::busy() const { return run_ && !run_->get().finished(); }
+
+std::string Session::load_mesh(const std::string& bytes, const std::string& file_name)
 {
-    return run_ && !run_->get().finished();
+    return guarded([&] {
+        if (busy())
+            throw InvalidInputError("a run is in progress; cancel it first");
+        if (is_model_file_name(file_name))
+            return load_model(bytes, file_name);
+        if (!is_mesh_file_name(file_name))
+            throw InvalidInputError(file_name + ": unknown file type (use .obj .stl .ply .off .gltf .glb, or a "
+                                                ".zome.json / .vef model)");
+        if (bytes.empty())
+            throw InvalidInputError(file_name + ": the file is empty");
+        const std::span<const uint8_t> data(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
+        PolygonSoup soup = read_mesh_buffer(data, file_name);
+        PreparedSurface prepared = prepare_surface(soup);
+        auto loaded = std::make_unique<LoadedSurface>();
+        loaded->mesh = prepared.mesh;
+        loaded->report = prepared.report;
+        loaded->projector = std::make_unique<SurfaceProjector>(prepared.mesh);
+        loaded->inside = std::make_unique<InsideTest>(*loaded->projector);
+        surface_ = std::move(loaded);
+        surface_name_ = file_name;
+        nlohmann::json out;
+        out["ok"] = true;
+        out["kind"] = "mesh";
+        out["report"] = nlohmann::json::parse(surface_report_json(surface_->report, file_name));
+        return out.dump();
+    });
 }
 
-std::string Session::load_mesh(const std::string &bytes, const std::string &file_name)
+std::string Session::load_model(const std::string& bytes, const std::string& file_name)
 {
-    return guarded(
-        [&]
-        {
-            if (busy())
-                throw InvalidInputError("a run is in progress; cancel it first");
-            if (is_model_file_name(file_name))
-                return load_model(bytes, file_name);
-            if (!is_mesh_file_name(file_name))
-                throw InvalidInputError(file_name + ": unknown file type (use .obj .stl .ply .off .gltf .glb, or a "
-                                                    ".zome.json / .vef model)");
-            if (bytes.empty())
-                throw InvalidInputError(file_name + ": the file is empty");
-            const std::span<const uint8_t> data(reinterpret_cast<const uint8_t *>(bytes.data()), bytes.size());
-            PolygonSoup soup = read_mesh_buffer(data, file_name);
-            PreparedSurface prepared = prepare_surface(soup);
-            auto loaded = std::make_unique<LoadedSurface>();
-            loaded->mesh = prepared.mesh;
-            loaded->report = prepared.report;
-            loaded->projector = std::make_unique<SurfaceProjector>(prepared.mesh);
-            loaded->inside = std::make_unique<InsideTest>(*loaded->projector);
-            surface_ = std::move(loaded);
-            surface_name_ = file_name;
-            nlohmann::json out;
-            out["ok"] = true;
-            out["kind"] = "mesh";
-            out["report"] = nlohmann::json::parse(surface_report_json(surface_->report, file_name));
-            return out.dump();
-        });
+    return guarded([&] {
+        if (busy())
+            throw InvalidInputError("a run is in progress; cancel it first");
+        if (bytes.empty())
+            throw InvalidInputError(file_name + ": the file is empty");
+        ZomeModel m = read_model_buffer(bytes, file_name);
+        parts_list(m); // rejects struts that are not Zome vectors before the model is shown
+        set_model(std::move(m), "file");
+        return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
+    });
 }
 
-std::string Session::load_model(const std::string &bytes, const std::string &file_name)
+std::string Session::open_link(const std::string& link)
 {
-    return guarded(
-        [&]
-        {
-            if (busy())
-                throw InvalidInputError("a run is in progress; cancel it first");
-            if (bytes.empty())
-                throw InvalidInputError(file_name + ": the file is empty");
-            ZomeModel m = read_model_buffer(bytes, file_name);
-            parts_list(m); // rejects struts that are not Zome vectors before the model is shown
-            set_model(std::move(m), "file");
-            return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
-        });
+    return guarded([&] {
+        if (busy())
+            throw InvalidInputError("a run is in progress; cancel it first");
+        ZomeModel m = decode_share_link(link);
+        set_model(std::move(m), "link");
+        return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
+    });
 }
 
-std::string Session::open_link(const std::string &link)
-{
-    return guarded(
-        [&]
-        {
-            if (busy())
-                throw InvalidInputError("a run is in progress; cancel it first");
-            ZomeModel m = decode_share_link(link);
-            set_model(std::move(m), "link");
-            return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
-        });
-}
-
-namespace
-{
+namespace {
 
 // Z0 of the loaded surface at `resolution`, and what the page shows of it: counts, genus against
 // the surface's, and the finished model's size and kits.
-std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface &s, int resolution, double b1 = 0.0)
+std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface& s, int resolution, double b1 = 0.0)
 {
     InitialModel z0 =
         build_initial_model(s.mesh, s.is_inside(), z0_options(resolution, s.report.genus, *s.projector, b1));
@@ -245,7 +231,7 @@ std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface &s, int 
 
 } // namespace
 
-const LoadedSurface &Session::idle_surface() const
+const LoadedSurface& Session::idle_surface() const
 {
     if (!surface_)
         throw InvalidInputError("no mesh loaded");
@@ -256,116 +242,109 @@ const LoadedSurface &Session::idle_surface() const
 
 std::string Session::estimate(int resolution)
 {
-    return guarded(
-        [&]
-        {
-            const LoadedSurface &s = idle_surface();
-            if (resolution < kMinResolution || resolution > kMaxResolution)
-                throw InvalidInputError("resolution must be between " + std::to_string(kMinResolution) + " and " +
-                                        std::to_string(kMaxResolution) + " cells");
-            auto [z0, out] = z0_estimate(s, resolution);
-            const GenusAdvice advice = z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution,
-                                                                      z0.report.topology.genus, 3.0)
-                                                       : GenusAdvice{};
-            out["advice"] = advice.message;
-            out["advice_resolution"] = advice.resolution;
-            return out.dump();
-        });
+    return guarded([&] {
+        const LoadedSurface& s = idle_surface();
+        if (resolution < kMinResolution || resolution > kMaxResolution)
+            throw InvalidInputError("resolution must be between " + std::to_string(kMinResolution) + " and " +
+                                    std::to_string(kMaxResolution) + " cells");
+        auto [z0, out] = z0_estimate(s, resolution);
+        const GenusAdvice advice = z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution,
+                                                                  z0.report.topology.genus, 3.0)
+                                                   : GenusAdvice{};
+        out["advice"] = advice.message;
+        out["advice_resolution"] = advice.resolution;
+        return out.dump();
+    });
 }
 
 std::string Session::estimate_size(double size_cm)
 {
-    return guarded(
-        [&]
-        {
-            const LoadedSurface &s = idle_surface();
-            const double longest = longest_side(s.mesh);
-            // The CLI's formula (real_size.h), so the page's size gives the model `run --size-cm` gives.
-            const double b1 = b1_for_size_cm(longest, size_cm);
-            auto [z0, out] = z0_estimate(s, static_cast<int>(std::lround(longest / b1)), b1);
-            out["size_cm"] = size_cm;
-            out["b1"] = b1;
-            out["advice"] = "";
-            out["advice_resolution"] = 0;
-            return out.dump();
-        });
+    return guarded([&] {
+        const LoadedSurface& s = idle_surface();
+        const double longest = longest_side(s.mesh);
+        // The CLI's formula (real_size.h), so the page's size gives the model `run --size-cm` gives.
+        const double b1 = b1_for_size_cm(longest, size_cm);
+        auto [z0, out] = z0_estimate(s, static_cast<int>(std::lround(longest / b1)), b1);
+        out["size_cm"] = size_cm;
+        out["b1"] = b1;
+        out["advice"] = "";
+        out["advice_resolution"] = 0;
+        return out.dump();
+    });
 }
 
-std::string Session::kit_check(const std::string &have, double balls) const
+std::string Session::kit_check(const std::string& have, double balls) const
 {
-    return guarded(
-        [&]
-        {
-            const OwnedKits owned = parse_owned_kits(have);
-            if (owned.empty())
-                throw InvalidInputError("no kits chosen");
-            if (!(balls >= 0 && balls <= 1e7))
-                throw InvalidInputError("the ball count must be between 0 and 10,000,000");
-            const PartCounts kits = kit_contents(owned);
-            const PartCounts need = part_counts(typical_parts(static_cast<size_t>(balls)));
-            PartCounts missing{};
-            for (size_t k = 0; k < need.size(); ++k)
-                missing[k] = need[k] > kits[k] ? need[k] - kits[k] : 0;
-            nlohmann::json out{{"ok", true},           {"fits", fits(need, kits)},
-                               {"text", fit_text(need, kits)}, {"owned", owned_text(owned)},
-                               {"missing", counts_json(missing)}, {"budget", balls_that_fit(kits)}};
-            return out.dump();
-        });
+    return guarded([&] {
+        const OwnedKits owned = parse_owned_kits(have);
+        if (owned.empty())
+            throw InvalidInputError("no kits chosen");
+        if (!(balls >= 0 && balls <= 1e7))
+            throw InvalidInputError("the ball count must be between 0 and 10,000,000");
+        const PartCounts kits = kit_contents(owned);
+        const PartCounts need = part_counts(typical_parts(static_cast<size_t>(balls)));
+        PartCounts missing{};
+        for (size_t k = 0; k < need.size(); ++k)
+            missing[k] = need[k] > kits[k] ? need[k] - kits[k] : 0;
+        nlohmann::json out{{"ok", true},
+                           {"fits", fits(need, kits)},
+                           {"text", fit_text(need, kits)},
+                           {"owned", owned_text(owned)},
+                           {"missing", counts_json(missing)},
+                           {"budget", balls_that_fit(kits)}};
+        return out.dump();
+    });
 }
 
-std::string Session::fit_kits(const std::string &have, int max_resolution, bool shrink)
+std::string Session::fit_kits(const std::string& have, int max_resolution, bool shrink)
 {
-    return guarded(
-        [&]
+    return guarded([&] {
+        const LoadedSurface& s = idle_surface();
+        const OwnedKits owned = parse_owned_kits(have);
+        if (owned.empty())
+            throw InvalidInputError("choose the kits you own first");
+        const PartCounts kits = kit_contents(owned);
+        size_t budget = balls_that_fit(kits);
+        const ZomeModel m = model();
+        if (shrink && !m.nodes.empty())
         {
-            const LoadedSurface &s = idle_surface();
-            const OwnedKits owned = parse_owned_kits(have);
-            if (owned.empty())
-                throw InvalidInputError("choose the kits you own first");
-            const PartCounts kits = kit_contents(owned);
-            size_t budget = balls_that_fit(kits);
-            const ZomeModel m = model();
-            if (shrink && !m.nodes.empty())
-            {
-                // The model on screen missed these kits: as the CLI's next try, fewer balls by the
-                // scarcest part's shortfall.
-                const PartCounts need = part_counts(parts_list(m));
-                if (!fits(need, kits))
-                    budget = std::min(budget, shrunk_ball_budget(need, kits, m.nodes.size()));
-            }
-            const KitFitPlan plan = plan_kit_fit(s.mesh, s.report.genus, s.is_inside(), probe_of(*s.projector), budget,
-                                                 max_resolution > 0 ? max_resolution : kMaxResolution);
-            return nlohmann::json{{"ok", true},
-                                  {"possible", plan.possible},
-                                  {"resolution", plan.resolution},
-                                  {"target_nodes", plan.target_nodes},
-                                  {"z0_nodes", plan.z0_nodes},
-                                  {"size_cm", plan.size_cm},
-                                  {"genus_kept", plan.genus_kept},
-                                  {"ball_budget", plan.ball_budget},
-                                  {"owned", owned_text(owned)},
-                                  {"message", plan.message}}
-                .dump();
-        });
+            // The model on screen missed these kits: as the CLI's next try, fewer balls by the
+            // scarcest part's shortfall.
+            const PartCounts need = part_counts(parts_list(m));
+            if (!fits(need, kits))
+                budget = std::min(budget, shrunk_ball_budget(need, kits, m.nodes.size()));
+        }
+        const KitFitPlan plan = plan_kit_fit(s.mesh, s.report.genus, s.is_inside(), probe_of(*s.projector), budget,
+                                             max_resolution > 0 ? max_resolution : kMaxResolution);
+        return nlohmann::json{{"ok", true},
+                              {"possible", plan.possible},
+                              {"resolution", plan.resolution},
+                              {"target_nodes", plan.target_nodes},
+                              {"z0_nodes", plan.z0_nodes},
+                              {"size_cm", plan.size_cm},
+                              {"genus_kept", plan.genus_kept},
+                              {"ball_budget", plan.ball_budget},
+                              {"owned", owned_text(owned)},
+                              {"message", plan.message}}
+            .dump();
+    });
 }
 
 std::string Session::auto_resolution()
 {
-    return guarded(
-        [&]
-        {
-            const LoadedSurface &s = idle_surface();
-            AutoResolutionOptions options;
-            options.seconds = 3.0;
-            options.initial.surface_probe = probe_of(*s.projector);
-            const AutoResolution a = choose_resolution(s.mesh, s.report.genus, s.is_inside(), options);
-            nlohmann::json out = z0_estimate(s, a.resolution).second;
-            out["kept"] = a.genus_kept;
-            out["searched_to"] = a.searched_to;
-            out["message"] = a.message;
-            out["seconds"] = a.seconds;
-            return out.dump();
-        });
+    return guarded([&] {
+        const LoadedSurface& s = idle_surface();
+        AutoResolutionOptions options;
+        options.seconds = 3.0;
+        options.initial.surface_probe = probe_of(*s.projector);
+        const AutoResolution a = choose_resolution(s.mesh, s.report.genus, s.is_inside(), options);
+        nlohmann::json out = z0_estimate(s, a.resolution).second;
+        out["kept"] = a.genus_kept;
+        out["searched_to"] = a.searched_to;
+        out["message"] = a.message;
+        out["seconds"] = a.seconds;
+        return out.dump();
+    });
 }
 
 void Session::set_model(ZomeModel model, std::string source)
@@ -382,52 +361,43 @@ ZomeModel Session::model() const
     return model_;
 }
 
-const TriangleMesh *Session::surface() const
-{
-    return surface_ ? &surface_->mesh : nullptr;
-}
+const TriangleMesh* Session::surface() const { return surface_ ? &surface_->mesh : nullptr; }
 
-void Session::execute_run(const RunOptions &options, RunControl &control)
+void Session::execute_run(const RunOptions& options, RunControl& control)
 {
     Stopwatch clock;
     try
     {
-        const LoadedSurface &s = *surface_;
+        const LoadedSurface& s = *surface_;
         PipelineOptions po = pipeline_options(options);
         po.advisor_seconds = 3.0;
         if (options.size_cm > 0.0)
             po.b1 = b1_for_size_cm(longest_side(s.mesh), options.size_cm); // as `run --size-cm`
-        AnnealOptions &a = po.anneal;
+        AnnealOptions& a = po.anneal;
         // 0 = automatic: every thread this build can start.
         a.threads = options.threads == 0 ? max_run_threads() : std::clamp(options.threads, 1, max_run_threads());
         a.progress_interval = 0.1;
-        control.update(
-            [&](RunProgress &p)
-            {
-                p.state = RunState::Initial;
-                p.budget_seconds = options.proposals > 0 ? 0.0 : options.seconds;
-                p.threads = a.threads;
-                p.annealer = !options.initial_only;
-            });
+        control.update([&](RunProgress& p) {
+            p.state = RunState::Initial;
+            p.budget_seconds = options.proposals > 0 ? 0.0 : options.seconds;
+            p.threads = a.threads;
+            p.annealer = !options.initial_only;
+        });
 
         double last_snapshot = -1.0;
         double last_fidelity = -1.0;
         PipelineCallbacks callbacks;
         callbacks.cancel = &control.cancel_flag();
-        callbacks.initial = [&](const ZomeModel &z0)
-        {
+        callbacks.initial = [&](const ZomeModel& z0) {
             set_model(z0, "run");
-            control.update(
-                [&](RunProgress &p)
-                {
-                    p.state = options.initial_only ? RunState::Initial : RunState::Annealing;
-                    p.nodes = z0.nodes.size();
-                    p.struts = z0.struts.size();
-                    p.seconds = clock.seconds();
-                });
+            control.update([&](RunProgress& p) {
+                p.state = options.initial_only ? RunState::Initial : RunState::Annealing;
+                p.nodes = z0.nodes.size();
+                p.struts = z0.struts.size();
+                p.seconds = clock.seconds();
+            });
         };
-        callbacks.progress = [&](const AnnealProgress &ap, Annealer &annealer)
-        {
+        callbacks.progress = [&](const AnnealProgress& ap, Annealer& annealer) {
             // The model goes out a few times a second (the page draws at least two per second);
             // a snapshot costs a copy of the mesh under the commit lock, so not on every report.
             // Not on the final report: the engine makes it under its commit lock, which
@@ -449,32 +419,30 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
                     {
                         fidelity = measure_fidelity(snapshot, *s.projector, quick);
                     }
-                    catch (const InvalidInputError &)
+                    catch (const InvalidInputError&)
                     {
                         // A model without faces has no distance yet; the figure waits for the next one.
                     }
                 }
                 set_model(std::move(snapshot), "run");
             }
-            control.update(
-                [&](RunProgress &p)
+            control.update([&](RunProgress& p) {
+                p.state = RunState::Annealing;
+                p.seconds = now;
+                p.fraction = ap.fraction;
+                p.temperature = ap.temperature;
+                p.energy = ap.energy.total;
+                p.best_energy = ap.best_energy;
+                p.proposals = ap.proposals;
+                p.commits = ap.commits;
+                p.nodes = ap.nodes;
+                p.struts = ap.struts;
+                if (fidelity)
                 {
-                    p.state = RunState::Annealing;
-                    p.seconds = now;
-                    p.fraction = ap.fraction;
-                    p.temperature = ap.temperature;
-                    p.energy = ap.energy.total;
-                    p.best_energy = ap.best_energy;
-                    p.proposals = ap.proposals;
-                    p.commits = ap.commits;
-                    p.nodes = ap.nodes;
-                    p.struts = ap.struts;
-                    if (fidelity)
-                    {
-                        p.gap_mm = fidelity->hausdorff * kMmPerB0;
-                        p.rms_mm = fidelity->rms_symmetric * kMmPerB0;
-                    }
-                });
+                    p.gap_mm = fidelity->hausdorff * kMmPerB0;
+                    p.rms_mm = fidelity->rms_symmetric * kMmPerB0;
+                }
+            });
         };
 
         PipelineResult result = run_pipeline(s.mesh, s.report.genus, po, callbacks);
@@ -482,97 +450,89 @@ void Session::execute_run(const RunOptions &options, RunControl &control)
         result.model.stats_json = pipeline_stats_json(result, -1);
         const size_t nodes = result.model.nodes.size(), struts = result.model.struts.size();
         set_model(std::move(result.model), "run");
-        control.update(
-            [&](RunProgress &p)
+        control.update([&](RunProgress& p) {
+            p.seconds = clock.seconds();
+            p.nodes = nodes;
+            p.struts = struts;
+            if (result.anneal)
             {
-                p.seconds = clock.seconds();
-                p.nodes = nodes;
-                p.struts = struts;
-                if (result.anneal)
-                {
-                    p.energy = result.model_energy.total;
-                    p.commits = result.anneal->stats.commits;
-                    p.proposals = result.anneal->stats.proposals;
-                }
-                if (!control.cancel_requested())
-                    p.fraction = 1.0; // a cancelled run shows how far it got
-                p.valid = result.model_valid;
-                p.genus = result.model_genus;
-                p.surface_genus = result.surface_genus;
-                if (result.model_valid)
-                {
-                    p.gap_mm = result.fidelity.hausdorff * kMmPerB0;
-                    p.rms_mm = result.fidelity.rms_symmetric * kMmPerB0;
-                }
-                p.note = result.advice;
-                if (result.automatic && !result.automatic->genus_kept)
-                    p.note = result.automatic->message;
-                if (!result.model_valid)
-                    p.note += (p.note.empty() ? "" : " ") + std::string("Model check: ") + result.validation;
-                p.state = control.cancel_requested() ? RunState::Cancelled : RunState::Done;
-            });
+                p.energy = result.model_energy.total;
+                p.commits = result.anneal->stats.commits;
+                p.proposals = result.anneal->stats.proposals;
+            }
+            if (!control.cancel_requested())
+                p.fraction = 1.0; // a cancelled run shows how far it got
+            p.valid = result.model_valid;
+            p.genus = result.model_genus;
+            p.surface_genus = result.surface_genus;
+            if (result.model_valid)
+            {
+                p.gap_mm = result.fidelity.hausdorff * kMmPerB0;
+                p.rms_mm = result.fidelity.rms_symmetric * kMmPerB0;
+            }
+            p.note = result.advice;
+            if (result.automatic && !result.automatic->genus_kept)
+                p.note = result.automatic->message;
+            if (!result.model_valid)
+                p.note += (p.note.empty() ? "" : " ") + std::string("Model check: ") + result.validation;
+            p.state = control.cancel_requested() ? RunState::Cancelled : RunState::Done;
+        });
     }
-    catch (const std::exception &e)
+    catch (const std::exception& e)
     {
         const std::string what = e.what();
-        control.update(
-            [&](RunProgress &p)
-            {
-                p.seconds = clock.seconds();
-                p.error = what;
-                p.state = RunState::Failed;
-            });
+        control.update([&](RunProgress& p) {
+            p.seconds = clock.seconds();
+            p.error = what;
+            p.state = RunState::Failed;
+        });
     }
 }
 
-std::string Session::start(const std::string &options_json)
+std::string Session::start(const std::string& options_json)
 {
-    return guarded(
-        [&]
-        {
-            if (!surface_)
-                throw InvalidInputError(
-                    "load a mesh first (this model came from a file or link; drop its mesh to run again)");
-            if (busy())
-                throw InvalidInputError("a run is in progress");
+    return guarded([&] {
+        if (!surface_)
+            throw InvalidInputError(
+                "load a mesh first (this model came from a file or link; drop its mesh to run again)");
+        if (busy())
+            throw InvalidInputError("a run is in progress");
 #if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-            // The single-threaded page build (zomeify_web_st) runs through run_blocking(): core_worker.js
-            // calls start() only when threadedBuild() is true.
-            (void)options_json;
-            throw InvalidInputError("start() needs the threaded build; this build runs with runBlocking()");
+        // The single-threaded page build (zomeify_web_st) runs through run_blocking(): core_worker.js
+        // calls start() only when threadedBuild() is true.
+        (void)options_json;
+        throw InvalidInputError("start() needs the threaded build; this build runs with runBlocking()");
 #else
-            const RunOptions options = parse_run_options(options_json);
-            if (run_thread_.joinable())
-                run_thread_.join();
-            run_ = std::make_unique<RunControl>();
-            // The worker's own thread must return to its event loop: it receives Cancel, and
-            // pthread_create from another thread is completed there.
-            run_->update([](RunProgress &p) { p.state = RunState::Initial; });
-            run_thread_ = std::thread([this, options] { execute_run(options, *run_); });
+        const RunOptions options = parse_run_options(options_json);
+        if (run_thread_.joinable())
+            run_thread_.join();
+        run_ = std::make_unique<RunControl>();
+        // The worker's own thread must return to its event loop: it receives Cancel, and
+        // pthread_create from another thread is completed there.
+        run_->update([](RunProgress& p) { p.state = RunState::Initial; });
+        run_thread_ = std::thread([this, options] { execute_run(options, *run_); });
 #endif
-            return nlohmann::json{{"ok", true}}.dump();
-        });
+        return nlohmann::json{{"ok", true}}.dump();
+    });
 }
 
-std::string Session::run_blocking(const std::string &options_json,
-                                  const std::function<bool(const RunProgress &)> &report, double interval)
+std::string Session::run_blocking(const std::string& options_json,
+                                  const std::function<bool(const RunProgress&)>& report, double interval)
 {
-    return guarded(
-        [&]
-        {
-            if (!surface_)
-                throw InvalidInputError("load a mesh first");
-            if (busy())
-                throw InvalidInputError("a run is in progress");
-            const RunOptions options = parse_run_options(options_json);
-            if (run_thread_.joinable())
-                run_thread_.join();
-            run_ = std::make_unique<RunControl>();
-            run_->set_reporter(report, interval);
-            execute_run(options, *run_);
-            report(run_->get());
-            return nlohmann::json{{"ok", true}}.dump();
-        });
+    return guarded([&] {
+        if (!surface_)
+            throw InvalidInputError("load a mesh first");
+        if (busy())
+            throw InvalidInputError("a run is in progress");
+        const RunOptions options = parse_run_options(options_json);
+        if (run_thread_.joinable())
+            run_thread_.join();
+        run_ = std::make_unique<RunControl>();
+        run_->set_reporter(report, interval);
+        execute_run(options, *run_);
+        report(run_->get());
+        return nlohmann::json{{"ok", true}}.dump();
+    });
 }
 
 void Session::cancel()
@@ -581,42 +541,35 @@ void Session::cancel()
         run_->request_cancel();
 }
 
-RunProgress Session::progress() const
+RunProgress Session::progress() const { return run_ ? run_->get() : RunProgress{}; }
+
+std::string Session::parts(const std::string& have) const
 {
-    return run_ ? run_->get() : RunProgress{};
+    return guarded([&] {
+        const OwnedKits owned = parse_owned_kits(have); // a bad kit name fails before the model is read
+        const ZomeModel m = model();
+        if (m.nodes.empty())
+            throw InvalidInputError("no model yet");
+        return parts_report_json(parts_list(m), owned);
+    });
 }
 
-std::string Session::parts(const std::string &have) const
+std::string Session::build_plan(const std::string& up) const
 {
-    return guarded(
-        [&]
-        {
-            const OwnedKits owned = parse_owned_kits(have); // a bad kit name fails before the model is read
-            const ZomeModel m = model();
-            if (m.nodes.empty())
-                throw InvalidInputError("no model yet");
-            return parts_report_json(parts_list(m), owned);
-        });
+    return guarded([&] {
+        const ZomeModel m = model();
+        if (m.nodes.empty())
+            throw InvalidInputError("no model yet");
+        PlanOptions options;
+        options.up = parse_up_axis(up);
+        const BuildPlan plan = plan_assembly(m, options);
+        nlohmann::json out = nlohmann::json::parse(plan_json(m, plan, plan_breadth_first(m, options).figures));
+        out["html"] = steps_html(m, plan, surface_name_.empty() ? "model" : surface_name_);
+        return out.dump();
+    });
 }
 
-std::string Session::build_plan(const std::string &up) const
-{
-    return guarded(
-        [&]
-        {
-            const ZomeModel m = model();
-            if (m.nodes.empty())
-                throw InvalidInputError("no model yet");
-            PlanOptions options;
-            options.up = parse_up_axis(up);
-            const BuildPlan plan = plan_assembly(m, options);
-            nlohmann::json out = nlohmann::json::parse(plan_json(m, plan, plan_breadth_first(m, options).figures));
-            out["html"] = steps_html(m, plan, surface_name_.empty() ? "model" : surface_name_);
-            return out.dump();
-        });
-}
-
-std::string Session::export_model(const std::string &file_name, const WriteOptions &options) const
+std::string Session::export_model(const std::string& file_name, const WriteOptions& options) const
 {
     const ZomeModel m = model();
     if (m.nodes.empty())
@@ -633,67 +586,63 @@ std::string Session::export_model(const std::string &file_name, const WriteOptio
 
 std::string Session::link() const
 {
-    return guarded(
-        [&]
-        {
-            const ZomeModel m = model();
-            if (m.nodes.empty())
-                throw InvalidInputError("no model yet");
-            return nlohmann::json{{"ok", true}, {"link", encode_share_link(m)}}.dump();
-        });
+    return guarded([&] {
+        const ZomeModel m = model();
+        if (m.nodes.empty())
+            throw InvalidInputError("no model yet");
+        return nlohmann::json{{"ok", true}, {"link", encode_share_link(m)}}.dump();
+    });
 }
 
 std::string Session::summary() const
 {
-    return guarded(
-        [&]
+    return guarded([&] {
+        ZomeModel m;
+        std::string source;
         {
-            ZomeModel m;
-            std::string source;
-            {
-                std::lock_guard lock(model_mutex_);
-                m = model_;
-                source = model_source_;
-            }
-            nlohmann::json out;
-            out["ok"] = true;
-            out["source"] = source;
-            out["balls"] = m.nodes.size();
-            out["struts"] = m.struts.size();
-            out["faces"] = m.faces.size();
-            nlohmann::json by_kind = nlohmann::json::object();
-            for (const auto &s : m.struts)
-            {
-                const int id = vector_id_of(m.nodes[s[1]] - m.nodes[s[0]]);
-                if (id >= 0)
-                    by_kind[std::string(kind_info(vector_kind(id)).name)] =
-                        by_kind.value(std::string(kind_info(vector_kind(id)).name), 0) + 1;
-            }
-            out["by_kind"] = by_kind;
-            if (!m.faces.empty())
-            {
-                const ValidationReport check = validate(from_model(m));
-                out["valid"] = check.ok();
-                out["genus"] = check.genus;
-                out["validation"] = check.message();
-            }
-            else
-            {
-                out["valid"] = nullptr;
-            }
-            if (!m.nodes.empty())
-            {
-                // Any model, a loaded one without faces too: can its parts be built side by side?
-                const ClearanceReport clearance = clearance_report(m);
-                out["clashes"] = clearance.total();
-                out["clearance"] = clearance_summary(clearance);
-            }
-            out["stats"] = nlohmann::json::parse(m.stats_json, nullptr, false);
-            if (out["stats"].is_discarded())
-                out["stats"] = nlohmann::json::object();
-            out["surface"] = surface_ ? surface_name_ : "";
-            return out.dump();
-        });
+            std::lock_guard lock(model_mutex_);
+            m = model_;
+            source = model_source_;
+        }
+        nlohmann::json out;
+        out["ok"] = true;
+        out["source"] = source;
+        out["balls"] = m.nodes.size();
+        out["struts"] = m.struts.size();
+        out["faces"] = m.faces.size();
+        nlohmann::json by_kind = nlohmann::json::object();
+        for (const auto& s : m.struts)
+        {
+            const int id = vector_id_of(m.nodes[s[1]] - m.nodes[s[0]]);
+            if (id >= 0)
+                by_kind[std::string(kind_info(vector_kind(id)).name)] =
+                    by_kind.value(std::string(kind_info(vector_kind(id)).name), 0) + 1;
+        }
+        out["by_kind"] = by_kind;
+        if (!m.faces.empty())
+        {
+            const ValidationReport check = validate(from_model(m));
+            out["valid"] = check.ok();
+            out["genus"] = check.genus;
+            out["validation"] = check.message();
+        }
+        else
+        {
+            out["valid"] = nullptr;
+        }
+        if (!m.nodes.empty())
+        {
+            // Any model, a loaded one without faces too: can its parts be built side by side?
+            const ClearanceReport clearance = clearance_report(m);
+            out["clashes"] = clearance.total();
+            out["clearance"] = clearance_summary(clearance);
+        }
+        out["stats"] = nlohmann::json::parse(m.stats_json, nullptr, false);
+        if (out["stats"].is_discarded())
+            out["stats"] = nlohmann::json::object();
+        out["surface"] = surface_ ? surface_name_ : "";
+        return out.dump();
+    });
 }
 
 } // namespace zomeify::web

@@ -19,8 +19,7 @@
 #include "core/zome/model.h"
 #include "wasm/run_progress.h"
 
-namespace zomeify::web
-{
+namespace zomeify::web {
 
 struct LoadedSurface;
 
@@ -29,16 +28,16 @@ class Session
 public:
     Session();
     ~Session();
-    Session(const Session &) = delete;
-    Session &operator=(const Session &) = delete;
+    Session(const Session&) = delete;
+    Session& operator=(const Session&) = delete;
 
     //! Reads and repairs a mesh file ({ok, kind:"mesh", report} or {ok:false, error}). On success
     //! the surface is replaced; the current model stays until a run replaces it.
-    std::string load_mesh(const std::string &bytes, const std::string &file_name);
+    std::string load_mesh(const std::string& bytes, const std::string& file_name);
     //! Reads a model file (.zome.json, .json, .vef) and makes it the current model.
-    std::string load_model(const std::string &bytes, const std::string &file_name);
+    std::string load_model(const std::string& bytes, const std::string& file_name);
     //! Opens a share link (whole URL, #m=… or m=…) as the current model.
-    std::string open_link(const std::string &link);
+    std::string open_link(const std::string& link);
 
     //! Z0 at `resolution` cells without keeping it: {nodes, struts, genus, surface_genus, kept,
     //! advice, size_mm, kits}. Used by the page's live estimate.
@@ -48,21 +47,21 @@ public:
     std::string estimate_size(double size_cm);
     //! Whether a typical model of `balls` balls fits the kits in `have` ("creator3, 2x basic", as
     //! `parts --have`): {fits, text, owned, missing{...}, budget} (budget: the balls that fit).
-    std::string kit_check(const std::string &have, double balls) const;
+    std::string kit_check(const std::string& have, double balls) const;
     //! "Fit my kits" (core/pipeline/kit_fit_plan.h): {possible, resolution, target_nodes, z0_nodes,
     //! size_cm, genus_kept, ball_budget, message}. With `shrink`, the current model (a run that
     //! missed the kits) lowers the budget as the CLI's next try does. `max_resolution` 0: no bound.
-    std::string fit_kits(const std::string &have, int max_resolution, bool shrink);
+    std::string fit_kits(const std::string& have, int max_resolution, bool shrink);
     //! The resolution a run takes when the user chose none (core/voxel/auto_resolution.h):
     //! {resolution, genus_kept, searched_to, message} plus estimate()'s fields for it.
     std::string auto_resolution();
 
     //! Starts a run (Z0, then annealing) on its own thread and returns at once; poll() reports.
     //! The threaded build only: the single-threaded build (zomeify_web_st) throws here; it uses run_blocking().
-    std::string start(const std::string &options_json);
+    std::string start(const std::string& options_json);
     //! The same run on the calling thread; `report` is called about every `interval` seconds
     //! and may ask to stop by returning true.
-    std::string run_blocking(const std::string &options_json, const std::function<bool(const RunProgress &)> &report,
+    std::string run_blocking(const std::string& options_json, const std::function<bool(const RunProgress&)>& report,
                              double interval);
     //! Asks a run to stop; it keeps the best model found so far.
     void cancel();
@@ -74,30 +73,30 @@ public:
     //! A counter that changes whenever model() changes.
     uint64_t model_version() const { return model_version_.load(); }
     //! The input surface, if a mesh is loaded.
-    const TriangleMesh *surface() const;
+    const TriangleMesh* surface() const;
 
     //! The parts list and kit plan of the current model (parts_report_json) or {ok:false,error}.
     //! With `have` (kits owned, `parts --have` syntax) the report adds what is missing.
-    std::string parts(const std::string &have = "") const;
+    std::string parts(const std::string& have = "") const;
     //! The assembly sequence of the current model (core/build plan_json) plus "html", the page to
     //! print (steps_html), `up` as "y", "-z", ...;
     //! or {ok:false,error}. Deterministic from the model, so a shared link gives the sender's steps.
-    std::string build_plan(const std::string &up) const;
+    std::string build_plan(const std::string& up) const;
     //! The current model in the format of `file_name`'s extension (.vef .glb .obj .mtl .zome.json .csv),
     //! with the writers' options (VEF without faces, OBJ in metres).
     //! Throws InvalidInputError for an unknown format or when there is no model.
-    std::string export_model(const std::string &file_name, const WriteOptions &options = {}) const;
+    std::string export_model(const std::string& file_name, const WriteOptions& options = {}) const;
     //! The share-link fragment m=2.… of the current model, or {ok:false,error}.
     std::string link() const;
     //! {balls, struts, faces, by_kind{...}, genus?, valid, source, stats{}}.
     std::string summary() const;
 
 private:
-    void execute_run(const RunOptions &options, RunControl &control);
+    void execute_run(const RunOptions& options, RunControl& control);
     void set_model(ZomeModel model, std::string source);
     bool busy() const;
     //! The loaded surface; InvalidInputError when there is none or a run is going.
-    const LoadedSurface &idle_surface() const;
+    const LoadedSurface& idle_surface() const;
 
     std::unique_ptr<LoadedSurface> surface_;
     std::string surface_name_;

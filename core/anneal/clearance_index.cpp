@@ -105,7 +105,8 @@ void ClearanceIndex::reset(const ZomeMesh& mesh)
     balls_.clear();
     struts_.clear();
     panels_.clear();
-    for (Vertex v : vertices(mesh)) balls_.insert(v.idx(), make_ball(mesh.position(v)));
+    for (Vertex v : vertices(mesh))
+        balls_.insert(v.idx(), make_ball(mesh.position(v)));
     for (Edge e : edges(mesh))
         struts_.insert(e.idx(), make_strut(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1))));
     for (Face f : faces(mesh))
@@ -125,7 +126,8 @@ void ClearanceIndex::reset(const ZomeModel& model)
     struts_.clear();
     panels_.clear();
     const size_t n = model.nodes.size();
-    for (size_t i = 0; i < n; ++i) balls_.insert(static_cast<uint32_t>(i), make_ball(model.nodes[i]));
+    for (size_t i = 0; i < n; ++i)
+        balls_.insert(static_cast<uint32_t>(i), make_ball(model.nodes[i]));
     for (size_t i = 0; i < model.struts.size(); ++i)
     {
         const auto& s = model.struts[i];
@@ -237,15 +239,21 @@ ClashKind ClearanceIndex::check(const LocalChange& change, Scratch& sc) const
             std::fill(marks->begin(), marks->end(), 0U);
         sc.mark = 1;
     }
-    for (Vertex v : change.removed_nodes()) mark_all(sc.removed_balls, v.idx(), sc.mark);
-    for (Edge e : change.removed_struts()) mark_all(sc.removed_struts, e.idx(), sc.mark);
-    for (Face f : change.removed_faces()) mark_all(sc.removed_panels, f.idx(), sc.mark);
+    for (Vertex v : change.removed_nodes())
+        mark_all(sc.removed_balls, v.idx(), sc.mark);
+    for (Edge e : change.removed_struts())
+        mark_all(sc.removed_struts, e.idx(), sc.mark);
+    for (Face f : change.removed_faces())
+        mark_all(sc.removed_panels, f.idx(), sc.mark);
     sc.balls.clear();
     sc.struts.clear();
     sc.panels.clear();
-    for (const ZVec& p : change.added_nodes()) sc.balls.push_back(make_ball(p));
-    for (const NewStrut& st : change.added_struts()) sc.struts.push_back(make_strut(st.a, st.b));
-    for (const NewFace& f : change.added_faces()) sc.panels.push_back(make_panel(f.view()));
+    for (const ZVec& p : change.added_nodes())
+        sc.balls.push_back(make_ball(p));
+    for (const NewStrut& st : change.added_struts())
+        sc.struts.push_back(make_strut(st.a, st.b));
+    for (const NewFace& f : change.added_faces())
+        sc.panels.push_back(make_panel(f.view()));
 
     for (const Ball& b : sc.balls)
         if (const ClashKind k = check_ball(b, sc); k != ClashKind::None)
@@ -318,7 +326,8 @@ ClearanceReport ClearanceIndex::audit() const
 ClearanceReport clearance_report(const ZomeMesh& mesh)
 {
     Box3 box;
-    for (Vertex v : vertices(mesh)) box.extend(to_vec3(mesh.position(v)));
+    for (Vertex v : vertices(mesh))
+        box.extend(to_vec3(mesh.position(v)));
     ClearanceIndex index(dilated(box, 1.0));
     index.reset(mesh);
     return index.audit();
@@ -327,7 +336,8 @@ ClearanceReport clearance_report(const ZomeMesh& mesh)
 ClearanceReport clearance_report(const ZomeModel& model)
 {
     Box3 box;
-    for (const ZVec& p : model.nodes) box.extend(to_vec3(p));
+    for (const ZVec& p : model.nodes)
+        box.extend(to_vec3(p));
     ClearanceIndex index(dilated(box, 1.0));
     index.reset(model);
     return index.audit();
@@ -351,7 +361,7 @@ std::string clearance_summary(const ClearanceReport& report)
         return "no clashes: the closest parts are " + std::string(what) + " " + mm(gap) + " apart";
     }
     static constexpr const char* kWhat[kClashKinds] = {"", "pairs of balls too close", "balls touching a strut",
-                                                      "pairs of struts too close", "struts through a face"};
+                                                       "pairs of struts too close", "struts through a face"};
     std::string out = std::to_string(report.total()) + (report.total() == 1 ? " clash:" : " clashes:");
     const char* sep = " ";
     for (int k = 1; k < kClashKinds; ++k)
@@ -365,9 +375,12 @@ std::string clearance_summary(const ClearanceReport& report)
 
 void ClearanceIndex::forget(const LocalChange& change)
 {
-    for (Vertex v : change.removed_nodes()) balls_.erase(v.idx());
-    for (Edge e : change.removed_struts()) struts_.erase(e.idx());
-    for (Face f : change.removed_faces()) panels_.erase(f.idx());
+    for (Vertex v : change.removed_nodes())
+        balls_.erase(v.idx());
+    for (Edge e : change.removed_struts())
+        struts_.erase(e.idx());
+    for (Face f : change.removed_faces())
+        panels_.erase(f.idx());
 }
 
 void ClearanceIndex::learn(const ZomeMesh& mesh, const LocalChange& change, std::span<const Face> added_faces)

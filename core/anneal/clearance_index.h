@@ -57,7 +57,8 @@ struct ClearanceReport
     size_t total() const noexcept
     {
         size_t n = 0;
-        for (size_t c : clashes) n += c;
+        for (size_t c : clashes)
+            n += c;
         return n;
     }
 };

@@ -114,8 +114,10 @@ bool CoverageGuard::admit(const ZomeMesh& mesh, const LocalChange& change)
         return true;
     }
     touched_.clear();
-    for (const Vertex& v : change.removed_nodes()) add_pending(to_vec3(mesh.position(v)), -1);
-    for (const ZVec& p : change.added_nodes()) add_pending(to_vec3(p), +1);
+    for (const Vertex& v : change.removed_nodes())
+        add_pending(to_vec3(mesh.position(v)), -1);
+    for (const ZVec& p : change.added_nodes())
+        add_pending(to_vec3(p), +1);
     bool ok = true;
     for (const uint32_t i : touched_)
         ok = ok && !(counts_[i] > 0 && static_cast<int64_t>(counts_[i]) + pending_[i] <= 0);

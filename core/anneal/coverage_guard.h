@@ -61,7 +61,7 @@ private:
 
     double radius_ = 0.0;
     double radius_squared_ = 0.0;
-    std::vector<Vec3> samples_; // sorted by cell
+    std::vector<Vec3> samples_;                // sorted by cell
     std::unordered_map<uint64_t, Cell> cells_; // packed cell coordinates → samples
     std::vector<uint32_t> counts_;
     std::vector<int32_t> pending_; // net change of a commit under test, zero between calls

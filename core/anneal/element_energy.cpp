@@ -39,9 +39,11 @@ Vec3 newell_normal(std::span<const ZVec> corners) noexcept
         if (corners[i] < corners[first])
             first = i;
     std::array<Vec3, 4> p;
-    for (size_t i = 0; i < k && i < p.size(); ++i) p[i] = lattice_sum(corners[(first + i) % k]).divided(1);
+    for (size_t i = 0; i < k && i < p.size(); ++i)
+        p[i] = lattice_sum(corners[(first + i) % k]).divided(1);
     Vec3 newell = Vec3::Zero();
-    for (size_t i = 0; i < k && i < p.size(); ++i) newell += p[i].cross(p[(i + 1) % k]);
+    for (size_t i = 0; i < k && i < p.size(); ++i)
+        newell += p[i].cross(p[(i + 1) % k]);
     return newell;
 }
 
@@ -76,8 +78,8 @@ FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const
         const ZVec& at = mesh.position(mesh.to_vertex(h));
         first = first ? first : &at;
         sum += at;
-        out.normal += corner_energy(mesh.position(mesh.from_vertex(h)), at,
-                                    mesh.position(mesh.to_vertex(mesh.next(h))), normals.at(at));
+        out.normal += corner_energy(mesh.position(mesh.from_vertex(h)), at, mesh.position(mesh.to_vertex(mesh.next(h))),
+                                    normals.at(at));
         if (static_cast<size_t>(out.corners) < corners.size())
             corners[static_cast<size_t>(out.corners)] = at;
         ++out.corners;
@@ -85,9 +87,8 @@ FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const
     const SurfaceSample barycentre = normals.context().sample(sum, out.corners, first);
     out.distance = quantize(distance_value(barycentre, options));
     if (out.corners <= 4)
-        out.fold_over =
-            is_fold_over(newell_normal(std::span<const ZVec>(corners.data(), static_cast<size_t>(out.corners))),
-                         barycentre.normal);
+        out.fold_over = is_fold_over(
+            newell_normal(std::span<const ZVec>(corners.data(), static_cast<size_t>(out.corners))), barycentre.normal);
     return out;
 }
 

@@ -38,20 +38,24 @@ public:
         const Vec3 extent = domain.extent();
         const auto cells_for = [&](double c) {
             double n = 1.0;
-            for (int k = 0; k < 3; ++k) n *= std::floor(extent[k] / c) + 1.0;
+            for (int k = 0; k < 3; ++k)
+                n *= std::floor(extent[k] / c) + 1.0;
             return n;
         };
-        while (cells_for(cell) > kMaxCells) cell *= 1.25;
+        while (cells_for(cell) > kMaxCells)
+            cell *= 1.25;
         origin_ = domain.empty() ? Vec3::Zero() : domain.min;
         inverse_cell_ = 1.0 / cell;
-        for (int k = 0; k < 3; ++k) dims_[k] = static_cast<int>(std::floor(extent[k] * inverse_cell_)) + 1;
+        for (int k = 0; k < 3; ++k)
+            dims_[k] = static_cast<int>(std::floor(extent[k] * inverse_cell_)) + 1;
         cells_.assign(static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2], {});
     }
 
     //! Removes every element.
     void clear()
     {
-        for (auto& c : cells_) c.clear();
+        for (auto& c : cells_)
+            c.clear();
         std::fill(live_.begin(), live_.end(), uint8_t{0});
         size_ = 0;
     }
@@ -144,7 +148,8 @@ private:
         const std::array<int, 3> lo = cell_of(box.min), hi = cell_of(box.max);
         for (int z = lo[2]; z <= hi[2]; ++z)
             for (int y = lo[1]; y <= hi[1]; ++y)
-                for (int x = lo[0]; x <= hi[0]; ++x) f(cells_[cell_index(x, y, z)]);
+                for (int x = lo[0]; x <= hi[0]; ++x)
+                    f(cells_[cell_index(x, y, z)]);
     }
 
     std::vector<std::vector<uint32_t>> cells_{1};

@@ -22,8 +22,8 @@ EnergySums evaluate_local_sums(const ZomeMesh& mesh, const SurfaceContext& conte
     }
     for (Edge e : edges(mesh))
     {
-        const StrutEnergy s = strut_energy(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)),
-                                           context, options);
+        const StrutEnergy s =
+            strut_energy(mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1)), context, options);
         sums.distance += s.distance;
         sums.tangential += s.tangential;
         ++sums.struts;

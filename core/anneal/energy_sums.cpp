@@ -79,9 +79,8 @@ EnergyTerms energy_terms(const EnergySums& sums, const EnergyOptions& options) n
     t.complexity = complexity(sums.nodes, options);
     t.surface = average(sums.surface, sums.surface_samples);
     t.fold_overs = static_cast<double>(sums.fold_overs);
-    t.total = options.w_distance * t.distance + options.w_orientation * t.orientation +
-              options.w_fairing * t.fairing + options.w_complexity * t.complexity + options.w_surface * t.surface +
-              options.w_fold * t.fold_overs;
+    t.total = options.w_distance * t.distance + options.w_orientation * t.orientation + options.w_fairing * t.fairing +
+              options.w_complexity * t.complexity + options.w_surface * t.surface + options.w_fold * t.fold_overs;
     return t;
 }
 
@@ -103,7 +102,8 @@ double energy_change(const EnergySums& base, const EnergySums& delta, const Ener
            options.w_orientation * (options.tangential_share * d_tangential + options.normal_share * d_normal) +
            options.w_fairing * average_change(base.fairing, base.nodes, delta.fairing, delta.nodes) +
            options.w_complexity * d_complexity +
-           options.w_surface * average_change(base.surface, base.surface_samples, delta.surface, delta.surface_samples) +
+           options.w_surface *
+               average_change(base.surface, base.surface_samples, delta.surface, delta.surface_samples) +
            options.w_fold * static_cast<double>(delta.fold_overs);
 }
 

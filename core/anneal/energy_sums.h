@@ -58,8 +58,8 @@ struct EnergyTerms
     double fairing = 0.0;
     double complexity = 0.0;
     double surface = 0.0;
-    double fold_overs = 0.0;  //!< their number
-    double total = 0.0; //!< the weighted sum E
+    double fold_overs = 0.0; //!< their number
+    double total = 0.0;      //!< the weighted sum E
 };
 
 //! The terms of a set of sums.
@@ -71,9 +71,6 @@ EnergyTerms energy_terms(const EnergySums& sums, const EnergyOptions& options) n
 double energy_change(const EnergySums& base, const EnergySums& delta, const EnergyOptions& options) noexcept;
 
 //! A fixed-point sum as a double (in the energy's units).
-inline double to_double(EnergyAccumulator sum) noexcept
-{
-    return static_cast<double>(sum) * kEnergyQuantum;
-}
+inline double to_double(EnergyAccumulator sum) noexcept { return static_cast<double>(sum) * kEnergyQuantum; }
 
 } // namespace zomeify

@@ -40,8 +40,8 @@ double face_distance_squared(const Vec3& p, const FaceShape& face) noexcept
 {
     double best = point_triangle_distance_squared(p, face.triangles[0][0], face.triangles[0][1], face.triangles[0][2]);
     if (face.count == 2)
-        best = std::min(best,
-                        point_triangle_distance_squared(p, face.triangles[1][0], face.triangles[1][1], face.triangles[1][2]));
+        best = std::min(
+            best, point_triangle_distance_squared(p, face.triangles[1][0], face.triangles[1][1], face.triangles[1][2]));
     return best;
 }
 

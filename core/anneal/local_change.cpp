@@ -60,9 +60,8 @@ bool LocalChange::add_quad(const ZVec& a, const ZVec& b, const ZVec& c, const ZV
 
 bool LocalChange::overflowed() const noexcept
 {
-    return bad_face_ || removed_nodes_.overflowed() || removed_struts_.overflowed() ||
-           removed_faces_.overflowed() || added_nodes_.overflowed() || added_struts_.overflowed() ||
-           added_faces_.overflowed();
+    return bad_face_ || removed_nodes_.overflowed() || removed_struts_.overflowed() || removed_faces_.overflowed() ||
+           added_nodes_.overflowed() || added_struts_.overflowed() || added_faces_.overflowed();
 }
 
 namespace {

@@ -93,8 +93,8 @@ private:
         }
         for (Edge e : change_.removed_struts())
         {
-            const StrutEnergy s = strut_energy(mesh_.position(mesh_.vertex(e, 0)),
-                                               mesh_.position(mesh_.vertex(e, 1)), context_, options_);
+            const StrutEnergy s = strut_energy(mesh_.position(mesh_.vertex(e, 0)), mesh_.position(mesh_.vertex(e, 1)),
+                                               context_, options_);
             d.distance -= s.distance;
             d.tangential -= s.tangential;
             --d.struts;

@@ -5,9 +5,9 @@
 //! thread until released, and every commit only changes elements whose nodes its thread holds, so
 //! what a thread has claimed cannot change under it: validity and ΔE need no global lock.
 //!
-//! NodeTags is the shared table (one atomic owner word per node index, each on its own cache line, sized to the capacity the
-//! engine reserves before starting threads). Claims is one proposal's set of held nodes.
-//! Single-threaded use passes no table: every claim succeeds and nothing is shared.
+//! NodeTags is the shared table (one atomic owner word per node index, each on its own cache line, sized to the
+//! capacity the engine reserves before starting threads). Claims is one proposal's set of held nodes. Single-threaded
+//! use passes no table: every claim succeeds and nothing is shared.
 
 #include <atomic>
 #include <cstdint>

@@ -47,20 +47,20 @@ std::string_view operator_name(OperatorKind kind) noexcept;
 //! Why a proposal was not produced (for statistics; the engine counts them per kind).
 enum class Rejection : uint8_t
 {
-    None,          //!< a valid proposal was produced
-    Busy,          //!< a node was claimed by another thread
-    NoCandidate,   //!< no element of that kind near the seed, or no new position found
-    FaceSize,      //!< a face would have fewer than 3 or more than 4 corners
-    Valence,       //!< a node would have valence < 3
-    Occupied,      //!< a new position is already a node
-    SlotConflict,  //!< two struts in one slot of a node
-    DoubleStrut,   //!< a node pair would be joined twice
-    LinkTwice,     //!< a link node pointed to twice (non-disc neighbourhood)
-    Topology,      //!< any other manifold/genus safeguard
-    Overflow,      //!< the change did not fit LocalChange's fixed capacity
-    FoldedQuad,    //!< a quad whose diagonal is also a strut (two faces folded onto each other)
-    FoldOver,      //!< (from the energy's simulate) a new face facing against the surface
-    Uncovered,     //!< (at commit, after Metropolis) would leave a part of S with no node near (coverage_guard.h)
+    None,         //!< a valid proposal was produced
+    Busy,         //!< a node was claimed by another thread
+    NoCandidate,  //!< no element of that kind near the seed, or no new position found
+    FaceSize,     //!< a face would have fewer than 3 or more than 4 corners
+    Valence,      //!< a node would have valence < 3
+    Occupied,     //!< a new position is already a node
+    SlotConflict, //!< two struts in one slot of a node
+    DoubleStrut,  //!< a node pair would be joined twice
+    LinkTwice,    //!< a link node pointed to twice (non-disc neighbourhood)
+    Topology,     //!< any other manifold/genus safeguard
+    Overflow,     //!< the change did not fit LocalChange's fixed capacity
+    FoldedQuad,   //!< a quad whose diagonal is also a strut (two faces folded onto each other)
+    FoldOver,     //!< (from the energy's simulate) a new face facing against the surface
+    Uncovered,    //!< (at commit, after Metropolis) would leave a part of S with no node near (coverage_guard.h)
     // At commit, after Metropolis: parts that could not be built side by side (clearance_index.h).
     BallsTooClose,   //!< two balls
     BallOnStrut,     //!< a ball and a strut it does not hold
@@ -82,8 +82,7 @@ struct Proposal
 //! Fills `out` with a random valid proposal of `kind` around `seed` (a live node that `claims`
 //! already holds). Returns false, with out.rejection set, if none. Reads only claimed nodes; never
 //! modifies the mesh; noexcept and allocation-free in steady state (thread_local scratch is fine).
-bool propose(OperatorKind kind, const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims,
-             Proposal& out) noexcept;
+bool propose(OperatorKind kind, const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims, Proposal& out) noexcept;
 
 //! Executes a proposal produced by propose() on the unchanged mesh (same claims held): removes
 //! its faces, struts and nodes, adds its nodes, and adds its faces (creating their struts). The

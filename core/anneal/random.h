@@ -14,7 +14,8 @@ public:
     explicit Rng(uint64_t seed = 0) noexcept
     {
         uint64_t x = seed;
-        for (uint64_t& s : state_) s = splitmix64(x);
+        for (uint64_t& s : state_)
+            s = splitmix64(x);
     }
     //! 64 uniform bits.
     uint64_t next() noexcept

@@ -56,7 +56,8 @@ private:
     };
     void clear() noexcept
     {
-        for (size_t i = 0; i < kSlots; ++i) slots_[i].point = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+        for (size_t i = 0; i < kSlots; ++i)
+            slots_[i].point = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
     }
 
     uint64_t generation_ = 0;

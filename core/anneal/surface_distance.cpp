@@ -43,7 +43,8 @@ SurfaceDistance::SurfaceDistance(const SurfaceContext& context, const EnergyOpti
         return;
     grid_ = SampleGrid(surface_sample_points(context, options.surface_spacing), kSampleCell);
     Box3 domain;
-    for (const Vec3& p : grid_.points()) domain.extend(p);
+    for (const Vec3& p : grid_.points())
+        domain.extend(p);
     faces_ = ElementGrid<FaceShape>(dilated(domain, options.surface_cap + 4.0), kFaceCell);
     d2_.assign(grid_.size(), cap2_);
     bound_.assign(grid_.size(), cap2_);
@@ -120,10 +121,11 @@ void SurfaceDistance::search_grid(const Vec3& p, Nearest& n, SurfaceChange& c) c
     const double reach = n.best;
     Box3 box;
     box.extend(p);
-    faces_.for_each_near(dilated(box, std::sqrt(reach) + kSlack), c.visits_, [&](uint32_t face, const FaceShape& shape) {
-        if (!removed(c, face))
-            n.offer(face_distance_squared_below(p, shape, n.best), face, false);
-    });
+    faces_.for_each_near(dilated(box, std::sqrt(reach) + kSlack), c.visits_,
+                         [&](uint32_t face, const FaceShape& shape) {
+                             if (!removed(c, face))
+                                 n.offer(face_distance_squared_below(p, shape, n.best), face, false);
+                         });
     n.second = std::min(n.second, reach);
 }
 
@@ -142,7 +144,8 @@ void SurfaceDistance::reset(const ZomeMesh& mesh)
         return;
     faces_.clear();
     std::fill(first_owned_.begin(), first_owned_.end(), kNone);
-    for (Face f : faces(mesh)) faces_.insert(f.idx(), mesh_face_shape(mesh, f));
+    for (Face f : faces(mesh))
+        faces_.insert(f.idx(), mesh_face_shape(mesh, f));
     const std::vector<Vec3>& points = grid_.points();
     for (uint32_t i = 0; i < points.size(); ++i)
     {
@@ -153,7 +156,8 @@ void SurfaceDistance::reset(const ZomeMesh& mesh)
         link(i, n.owner);
         sum_ += value(n.best);
     }
-    for (uint32_t c = 0; c < grid_.cell_count(); ++c) refresh_cell_bound(c);
+    for (uint32_t c = 0; c < grid_.cell_count(); ++c)
+        refresh_cell_bound(c);
 }
 
 void SurfaceDistance::record(uint32_t point, const Nearest& n, SurfaceChange& c) const
@@ -256,8 +260,10 @@ void SurfaceDistance::commit(SurfaceChange& c, std::span<const Face> added)
 {
     if (!enabled_)
         return;
-    for (uint32_t f : c.removed_faces_) faces_.erase(f);
-    for (size_t k = 0; k < c.added_.size() && k < added.size(); ++k) faces_.insert(added[k].idx(), c.added_[k]);
+    for (uint32_t f : c.removed_faces_)
+        faces_.erase(f);
+    for (size_t k = 0; k < c.added_.size() && k < added.size(); ++k)
+        faces_.insert(added[k].idx(), c.added_[k]);
     touched_cells_.clear();
     for (const SurfaceChange::Update& u : c.updates_)
     {
@@ -269,7 +275,8 @@ void SurfaceDistance::commit(SurfaceChange& c, std::span<const Face> added)
         if (std::find(touched_cells_.begin(), touched_cells_.end(), cell) == touched_cells_.end())
             touched_cells_.push_back(cell);
     }
-    for (uint32_t cell : touched_cells_) refresh_cell_bound(cell);
+    for (uint32_t cell : touched_cells_)
+        refresh_cell_bound(cell);
     if (!c.added_box_.empty())
         lower_bounds_near_added(c);
     sum_ += c.delta_;

@@ -145,10 +145,10 @@ private:
     ElementGrid<FaceShape> faces_;
     std::vector<double> d2_;
     std::vector<uint32_t> owner_;
-    std::vector<double> bound_; // lower bound of the squared distance to every face but the owner
+    std::vector<double> bound_;         // lower bound of the squared distance to every face but the owner
     std::vector<uint32_t> first_owned_; // per face index
     std::vector<uint32_t> next_owned_, previous_owned_; // per point
-    std::vector<double> cell_d2_, cell_bound_; // per sample cell: the largest d2_ and bound_ of its points
+    std::vector<double> cell_d2_, cell_bound_;          // per sample cell: the largest d2_ and bound_ of its points
     EnergyAccumulator sum_ = 0;
     uint64_t version_ = 0;
     SurfaceChange own_; // reset()'s scratch

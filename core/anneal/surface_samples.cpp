@@ -32,12 +32,14 @@ std::vector<Vec3> surface_sample_points(const SurfaceContext& context, double sp
     const Vec3 translation(context.transform().translation[0], context.transform().translation[1],
                            context.transform().translation[2]);
     std::vector<Vec3> zome(mesh.positions.size());
-    for (size_t i = 0; i < zome.size(); ++i) zome[i] = (mesh.positions[i] - translation) / scale;
+    for (size_t i = 0; i < zome.size(); ++i)
+        zome[i] = (mesh.positions[i] - translation) / scale;
 
     std::vector<Vec3> out;
     std::unordered_set<uint64_t> taken;
     const auto offer = [&](const Vec3& p) {
-        if (taken.insert(pack(cell_index(p.x(), spacing), cell_index(p.y(), spacing), cell_index(p.z(), spacing))).second)
+        if (taken.insert(pack(cell_index(p.x(), spacing), cell_index(p.y(), spacing), cell_index(p.z(), spacing)))
+                .second)
             out.push_back(p);
     };
     for (const auto& t : mesh.triangles)
@@ -59,18 +61,22 @@ SampleGrid::SampleGrid(const std::vector<Vec3>& points, double cell)
     if (points.empty())
         return;
     Box3 bounds;
-    for (const Vec3& p : points) bounds.extend(p);
+    for (const Vec3& p : points)
+        bounds.extend(p);
     const Vec3 extent = bounds.extent();
     const auto cells_for = [&](double c) {
         double n = 1.0;
-        for (int k = 0; k < 3; ++k) n *= std::floor(extent[k] / c) + 1.0;
+        for (int k = 0; k < 3; ++k)
+            n *= std::floor(extent[k] / c) + 1.0;
         return n;
     };
-    while (cells_for(cell) > kMaxCells) cell *= 1.5;
+    while (cells_for(cell) > kMaxCells)
+        cell *= 1.5;
     origin_ = bounds.min;
     cell_size_ = cell;
     inverse_cell_ = 1.0 / cell;
-    for (int k = 0; k < 3; ++k) dims_[k] = static_cast<int>(std::floor(extent[k] * inverse_cell_)) + 1;
+    for (int k = 0; k < 3; ++k)
+        dims_[k] = static_cast<int>(std::floor(extent[k] * inverse_cell_)) + 1;
 
     const size_t cell_count = static_cast<size_t>(dims_[0]) * dims_[1] * dims_[2];
     std::vector<uint32_t> key(points.size());

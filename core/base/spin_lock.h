@@ -34,7 +34,7 @@ class BasicSpinLock
 public:
     void lock() noexcept
     {
-        for (int spins = 0; locked_.exchange(true, std::memory_order_acquire); )
+        for (int spins = 0; locked_.exchange(true, std::memory_order_acquire);)
         {
             while (locked_.load(std::memory_order_relaxed))
             {
@@ -64,13 +64,14 @@ public:
     {
         int spins = 0;
         uint32_t s = state_.load(std::memory_order_relaxed);
-        while ((s & kWriter) || !state_.compare_exchange_weak(s, s | kWriter, std::memory_order_acquire,
-                                                                std::memory_order_relaxed))
+        while ((s & kWriter) ||
+               !state_.compare_exchange_weak(s, s | kWriter, std::memory_order_acquire, std::memory_order_relaxed))
         {
             wait(spins);
             s = state_.load(std::memory_order_relaxed);
         }
-        while (state_.load(std::memory_order_acquire) != kWriter) wait(spins); // readers leave
+        while (state_.load(std::memory_order_acquire) != kWriter)
+            wait(spins); // readers leave
     }
     bool try_lock() noexcept
     {

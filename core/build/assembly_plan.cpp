@@ -46,10 +46,7 @@ Adjacency adjacency(const ZomeModel& model)
 }
 
 //! Whether ball a comes before ball b among equals: by exact position, never by index.
-bool before(const ZomeModel& model, uint32_t a, uint32_t b)
-{
-    return model.nodes[a].c < model.nodes[b].c;
-}
+bool before(const ZomeModel& model, uint32_t a, uint32_t b) { return model.nodes[a].c < model.nodes[b].c; }
 
 uint32_t lowest_ball(const ZomeModel& model, const std::vector<double>& h)
 {
@@ -64,7 +61,10 @@ uint32_t lowest_ball(const ZomeModel& model, const std::vector<double>& h)
 class StepCutter
 {
 public:
-    StepCutter(const Adjacency& adj, const PlanOptions& options) : adj_(adj), options_(options), step_of_(adj.size(), -1) {}
+    StepCutter(const Adjacency& adj, const PlanOptions& options)
+        : adj_(adj), options_(options), step_of_(adj.size(), -1)
+    {
+    }
 
     bool placed(uint32_t v) const { return step_of_[v] >= 0; }
     //! Parts that placing v brings: the ball and its struts to placed balls.
@@ -330,14 +330,16 @@ std::string check_plan(const ZomeModel& model, const BuildPlan& plan)
             strut_step[si] = static_cast<int>(s);
             const auto [a, b] = model.struts[si];
             if (step_of[a] < 0 || step_of[b] < 0)
-                return "strut " + std::to_string(si) + " in step " + std::to_string(s + 1) + " has a ball not yet built";
+                return "strut " + std::to_string(si) + " in step " + std::to_string(s + 1) +
+                       " has a ball not yet built";
             parent[find(a)] = find(b);
         }
         // One piece after every step: every built ball joined to the first one.
         const uint32_t root = find(plan.steps[0].balls.at(0));
         for (uint32_t v = 0; v < n; ++v)
             if (step_of[v] >= 0 && find(v) != root)
-                return "after step " + std::to_string(s + 1) + " ball " + std::to_string(v) + " is not joined to the rest";
+                return "after step " + std::to_string(s + 1) + " ball " + std::to_string(v) +
+                       " is not joined to the rest";
     }
     if (built != n)
         return std::to_string(n - built) + " balls are in no step";

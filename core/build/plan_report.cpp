@@ -26,10 +26,7 @@ void figures_json(std::ostream& os, const PlanFigures& f)
 
 } // namespace
 
-std::string up_axis_name(UpAxis up)
-{
-    return std::string(up.sign < 0 ? "-" : "") + char('x' + up.axis);
-}
+std::string up_axis_name(UpAxis up) { return std::string(up.sign < 0 ? "-" : "") + char('x' + up.axis); }
 
 std::vector<StrutKind> strut_kinds(const ZomeModel& model)
 {
@@ -128,8 +125,9 @@ std::string plan_text(const ZomeModel& model, const BuildPlan& plan, const PlanF
         os << "\n";
     }
     const double mm = kMmPerB0;
-    os << "Largest overhang " << number(plan.figures.max_overhang_b0 * mm) << " mm; steps ending with every new ball on two struts: "
-       << number(100 * plan.figures.two_strut_share) << "%; most balls on one strut at once: " << plan.figures.max_dangling
+    os << "Largest overhang " << number(plan.figures.max_overhang_b0 * mm)
+       << " mm; steps ending with every new ball on two struts: " << number(100 * plan.figures.two_strut_share)
+       << "%; most balls on one strut at once: " << plan.figures.max_dangling
        << " (breadth-first order: " << naive.steps << " steps, " << number(naive.max_overhang_b0 * mm) << " mm, "
        << number(100 * naive.two_strut_share) << "%, " << naive.max_dangling << ").\n";
     return os.str();

@@ -13,17 +13,11 @@ namespace {
 constexpr double kMmPerB1 = kMmPerB0 * kPhi;
 constexpr double kMinCells = 2, kMaxCells = 256; // pipeline.h's resolution bounds
 
-std::string cm(double x)
-{
-    return std::to_string(static_cast<long>(std::lround(x)));
-}
+std::string cm(double x) { return std::to_string(static_cast<long>(std::lround(x))); }
 
 } // namespace
 
-double built_size_cm(double extent_b0)
-{
-    return (extent_b0 * kMmPerB0 + kBallDiameterMm) / 10.0;
-}
+double built_size_cm(double extent_b0) { return (extent_b0 * kMmPerB0 + kBallDiameterMm) / 10.0; }
 
 double b1_for_size_cm(double mesh_longest_side, double size_cm)
 {

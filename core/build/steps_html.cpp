@@ -23,11 +23,20 @@ std::string escape(const std::string& s)
     {
         switch (c)
         {
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '&': out += "&amp;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '&':
+            out += "&amp;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -44,9 +53,12 @@ const char* strut_colour(StrutKind k)
 {
     switch (kind_color(k))
     {
-    case Color::Blue: return "#1c5fd6";
-    case Color::Yellow: return "#e0a800";
-    default: return "#d3212d";
+    case Color::Blue:
+        return "#1c5fd6";
+    case Color::Yellow:
+        return "#e0a800";
+    default:
+        return "#d3212d";
     }
 }
 
@@ -136,10 +148,12 @@ std::string steps_html(const ZomeModel& model, const BuildPlan& plan, const std:
     }
     std::ostringstream os;
     os << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\">"
-       << "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'; img-src data:\">"
+       << "<meta http-equiv=\"Content-Security-Policy\" content=\"default-src 'none'; style-src 'unsafe-inline'; "
+          "img-src data:\">"
        << "<title>Build steps: " << escape(title) << "</title><style>"
        << "body{font-family:sans-serif;margin:1em;color:#111}"
-       << ".step{display:inline-block;vertical-align:top;width:320px;margin:0 1em 1em 0;break-inside:avoid;page-break-inside:avoid}"
+       << ".step{display:inline-block;vertical-align:top;width:320px;margin:0 1em 1em "
+          "0;break-inside:avoid;page-break-inside:avoid}"
        << ".step h2{font-size:1.1em;margin:.2em 0}.step ul{margin:.2em 0;padding-left:1.2em}"
        << "svg{border:1px solid #ccc;background:#fff}</style></head><body>\n";
     os << "<h1>Build steps: " << escape(title) << "</h1>\n<p>" << model.nodes.size() << " balls and "
@@ -161,9 +175,10 @@ std::string steps_html(const ZomeModel& model, const BuildPlan& plan, const std:
                 os << "<li>" << counts[k] << " &times; " << info.name << " " << info.color << " " << info.part_code
                    << "</li>";
             }
-        os << "</ul><p>" << (s == 0 ? std::string("Start on the table.")
-                                    : "Attach to " + std::to_string(st.attach.size()) +
-                                          (st.attach.size() == 1 ? " ball" : " balls") + " already built.")
+        os << "</ul><p>"
+           << (s == 0 ? std::string("Start on the table.")
+                      : "Attach to " + std::to_string(st.attach.size()) + (st.attach.size() == 1 ? " ball" : " balls") +
+                            " already built.")
            << "</p></section>\n";
     }
     os << "</body></html>\n";

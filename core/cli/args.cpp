@@ -31,10 +31,7 @@ Args::Args(const std::vector<std::string>& argv, const std::set<std::string>& va
     }
 }
 
-bool Args::has(const std::string& name) const
-{
-    return options_.count(name) > 0;
-}
+bool Args::has(const std::string& name) const { return options_.count(name) > 0; }
 
 std::optional<std::string> Args::value(const std::string& name) const
 {

@@ -16,8 +16,7 @@ class Args
 public:
     //! Parses argv (after the command name). `valued` lists the options that take a value,
     //! `flags` the ones that do not. Throws InvalidInputError on anything else.
-    Args(const std::vector<std::string>& argv, const std::set<std::string>& valued,
-         const std::set<std::string>& flags);
+    Args(const std::vector<std::string>& argv, const std::set<std::string>& valued, const std::set<std::string>& flags);
 
     const std::vector<std::string>& positional() const { return positional_; }
     bool has(const std::string& name) const;

@@ -18,14 +18,14 @@ int cmd_convert(const CommandArgs& argv)
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())
         throw InvalidInputError("missing -o OUT");
-    for (const std::string& out : outputs) check_writable_model_name(out);
+    for (const std::string& out : outputs)
+        check_writable_model_name(out);
     const WriteOptions options = write_options(args);
     const ZomeModel model = read_model_warning_of_clashes(args.positional()[0]);
     for (const std::string& out : outputs)
     {
         write_model_file(out, model, options);
-        std::cout << "wrote " << out << " (" << model.nodes.size() << " balls, " << model.struts.size()
-                  << " struts)\n";
+        std::cout << "wrote " << out << " (" << model.nodes.size() << " balls, " << model.struts.size() << " struts)\n";
     }
     return 0;
 }

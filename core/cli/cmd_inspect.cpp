@@ -9,14 +9,13 @@
 #include "core/surface/read_mesh.h"
 #include "core/surface/report_text.h"
 
-namespace zomeify::cli
-{
+namespace zomeify::cli {
 
-int cmd_inspect(const CommandArgs &argv)
+int cmd_inspect(const CommandArgs& argv)
 {
     const Args args(argv, {}, {"--json"});
     args.expect_positional(1, "one mesh file: zomeify inspect MESH [--json]");
-    const std::string &path = args.positional()[0];
+    const std::string& path = args.positional()[0];
     const SurfaceReport report = diagnose(read_mesh_file(path));
     const size_t slash = path.find_last_of("/\\");
     const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);

@@ -21,7 +21,8 @@ int cmd_link(const CommandArgs& argv)
         const auto outputs = args.values("-o");
         if (outputs.empty())
             throw InvalidInputError("missing -o OUT");
-        for (const std::string& out : outputs) check_writable_model_name(out);
+        for (const std::string& out : outputs)
+            check_writable_model_name(out);
         const WriteOptions options = write_options(args);
         const ZomeModel model = decode_share_link(*fragment);
         warn_of_clashes(model, "the link");

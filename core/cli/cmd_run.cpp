@@ -28,20 +28,18 @@
 #include "core/surface/prepare.h"
 #include "core/surface/read_mesh.h"
 
-namespace zomeify::cli
-{
+namespace zomeify::cli {
 
-namespace
-{
+namespace {
 
-std::string file_name(const std::string &path)
+std::string file_name(const std::string& path)
 {
     const size_t slash = path.find_last_of("/\\");
     return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
 // "--operator-weights 1,1,1,1,1,1,1": seven non-negative integers in OperatorKind order.
-std::array<uint32_t, 7> operator_weights(const std::string &text)
+std::array<uint32_t, 7> operator_weights(const std::string& text)
 {
     std::array<uint32_t, 7> w{};
     size_t k = 0, i = 0;
@@ -67,19 +65,19 @@ std::array<uint32_t, 7> operator_weights(const std::string &text)
 }
 
 // An option of run_settings.h from its flag, within the core's bounds (the page reads the same ones).
-double setting(const Args &args, const char *key, double fallback)
+double setting(const Args& args, const char* key, double fallback)
 {
-    const OptionBounds &b = option_bounds(key);
+    const OptionBounds& b = option_bounds(key);
     return b.integer ? static_cast<double>(args.integer(b.flag, static_cast<long long>(fallback),
                                                         static_cast<long long>(b.min), static_cast<long long>(b.max)))
                      : args.number(b.flag, fallback, b.min, b.max);
 }
 
 // The longest side of the mesh's bounding box, mesh units.
-double longest_side(const TriangleMesh &mesh)
+double longest_side(const TriangleMesh& mesh)
 {
     double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
-    for (const Vec3 &p : mesh.positions)
+    for (const Vec3& p : mesh.positions)
         for (int k = 0; k < 3; ++k)
         {
             lo[k] = std::min(lo[k], p[k]);
@@ -89,7 +87,7 @@ double longest_side(const TriangleMesh &mesh)
 }
 
 // The options every front end shares (run_settings.h); "--resolution auto" is the default.
-RunSettings run_settings(const Args &args)
+RunSettings run_settings(const Args& args)
 {
     RunSettings s;
     if (args.has("--paper-energy"))
@@ -112,13 +110,13 @@ RunSettings run_settings(const Args &args)
     return s;
 }
 
-PipelineOptions pipeline_options(const Args &args)
+PipelineOptions pipeline_options(const Args& args)
 {
     PipelineOptions o = zomeify::pipeline_options(run_settings(args));
     o.b1 = args.number("--b1", 0.0, 0.0, 1e300);
     if (args.has("--b1") && !(o.b1 > 0.0))
         throw InvalidInputError("--b1 must be a positive length in mesh units");
-    AnnealOptions &a = o.anneal;
+    AnnealOptions& a = o.anneal;
     a.initial_temperature = args.number("--t0", 0.0, 0.0, 1e6);
     if (args.has("--t-min") && args.has("--t-min-ratio"))
         throw InvalidInputError("give either --t-min or --t-min-ratio, not both");
@@ -132,7 +130,7 @@ PipelineOptions pipeline_options(const Args &args)
         a.operator_weights = operator_weights(*args.value("--operator-weights"));
     a.clearance = !args.has("--no-clearance");
     a.refuse_new_fold_overs = !args.has("--allow-fold-overs");
-    EnergyOptions &e = a.energy;
+    EnergyOptions& e = a.energy;
     e.surface_cap = args.number("--surface-cap", e.surface_cap, 0.05, 100.0);
     e.surface_spacing = args.number("--surface-spacing", e.surface_spacing, 0.05, 100.0);
     e.surface_zone.f_max = args.number("--surface-zone", e.surface_zone.f_max, 0.0, 1e6);
@@ -140,12 +138,12 @@ PipelineOptions pipeline_options(const Args &args)
 }
 
 // The writers' formats (core/io/model_io), checked before the work so a typo costs nothing.
-void check_output_name(const std::string &out)
+void check_output_name(const std::string& out)
 {
     std::string lower = out;
-    for (char &c : lower)
+    for (char& c : lower)
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    for (const char *ext : {".zome.json", ".json", ".vef", ".glb", ".obj", ".csv"})
+    for (const char* ext : {".zome.json", ".json", ".vef", ".glb", ".obj", ".csv"})
     {
         const std::string e = ext;
         if (lower.size() > e.size() && lower.compare(lower.size() - e.size(), e.size(), e) == 0)
@@ -154,14 +152,14 @@ void check_output_name(const std::string &out)
     throw InvalidInputError("'" + out + "': unknown model format (expected .zome.json, .vef, .glb, .obj or .csv)");
 }
 
-std::string summary(const std::string &path, const PipelineResult &r, const std::vector<std::string> &outputs)
+std::string summary(const std::string& path, const PipelineResult& r, const std::vector<std::string>& outputs)
 {
-    const InitialModelReport &z0 = r.initial.report;
-    const ZomeModel &m0 = r.initial.model;
+    const InitialModelReport& z0 = r.initial.report;
+    const ZomeModel& m0 = r.initial.model;
     std::ostringstream s;
     s << std::setprecision(4);
-    s << "Z0 of " << file_name(path) << " at " << r.resolution << " cells along the longest side (b1 = "
-      << z0.grid.cell << " mesh units, grid " << z0.grid.dims[0] << "x" << z0.grid.dims[1] << "x" << z0.grid.dims[2]
+    s << "Z0 of " << file_name(path) << " at " << r.resolution << " cells along the longest side (b1 = " << z0.grid.cell
+      << " mesh units, grid " << z0.grid.dims[0] << "x" << z0.grid.dims[1] << "x" << z0.grid.dims[2]
       << "): " << m0.nodes.size() << " balls, " << m0.struts.size() << " B1 struts, " << m0.faces.size()
       << " quads from " << z0.voxels << " voxels; genus " << z0.topology.genus << " against the surface's "
       << r.surface_genus << (z0.topology.genus == r.surface_genus ? " (kept)" : " (NOT kept)") << ". Cleanup removed "
@@ -177,16 +175,16 @@ std::string summary(const std::string &path, const PipelineResult &r, const std:
         s << " Resolution chosen automatically: " << r.automatic->message << ".";
     if (r.anneal)
     {
-        const AnnealStats &st = r.anneal->stats;
+        const AnnealStats& st = r.anneal->stats;
         s << " Annealed " << st.wall_seconds << " s on " << st.threads << (st.threads == 1 ? " thread" : " threads")
           << (st.cancelled ? " (cancelled)" : "") << ": " << st.proposals << " proposals, " << st.commits
-          << " commits; E " << std::setprecision(4) << r.anneal->start.total << " -> " << r.model_energy.total
-          << "; " << r.model.nodes.size() << " balls, " << r.model.struts.size() << " struts, genus "
-          << r.model_genus << ", " << r.fold_overs << (r.fold_overs == 1 ? " fold-over; " : " fold-overs; ")
-          << clearance_summary(r.clearance) << "; " << fidelity_summary(r.fidelity) << ".";
+          << " commits; E " << std::setprecision(4) << r.anneal->start.total << " -> " << r.model_energy.total << "; "
+          << r.model.nodes.size() << " balls, " << r.model.struts.size() << " struts, genus " << r.model_genus << ", "
+          << r.fold_overs << (r.fold_overs == 1 ? " fold-over; " : " fold-overs; ") << clearance_summary(r.clearance)
+          << "; " << fidelity_summary(r.fidelity) << ".";
     }
     s << " Wrote";
-    for (const std::string &out : outputs)
+    for (const std::string& out : outputs)
         s << " " << out;
     s << ".";
     if (!r.advice.empty())
@@ -196,14 +194,38 @@ std::string summary(const std::string &path, const PipelineResult &r, const std:
 
 } // namespace
 
-int cmd_run(const CommandArgs &argv)
+int cmd_run(const CommandArgs& argv)
 {
-    const Args args(argv,
-                    {"-o", "--resolution", "--b1", "--target-nodes", "--seconds", "--proposals", "--threads", "--seed",
-                     "--stats", "--t0", "--t-min", "--t0-factor", "--t-min-ratio", "--operator-weights", "--coverage-radius",
-                     "--w-distance", "--w-orientation", "--w-fairing", "--w-complexity", "--w-surface", "--surface-cap",
-                     "--surface-spacing", "--surface-zone", "--w-fold", "--size-cm", "--have", kObjUnitsOption},
-                    {"--initial-only", "--fit-kits", "--paper-energy", "--no-clearance", "--allow-fold-overs", kNoFacesFlag});
+    const Args args(
+        argv,
+        {"-o",
+         "--resolution",
+         "--b1",
+         "--target-nodes",
+         "--seconds",
+         "--proposals",
+         "--threads",
+         "--seed",
+         "--stats",
+         "--t0",
+         "--t-min",
+         "--t0-factor",
+         "--t-min-ratio",
+         "--operator-weights",
+         "--coverage-radius",
+         "--w-distance",
+         "--w-orientation",
+         "--w-fairing",
+         "--w-complexity",
+         "--w-surface",
+         "--surface-cap",
+         "--surface-spacing",
+         "--surface-zone",
+         "--w-fold",
+         "--size-cm",
+         "--have",
+         kObjUnitsOption},
+        {"--initial-only", "--fit-kits", "--paper-energy", "--no-clearance", "--allow-fold-overs", kNoFacesFlag});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())
@@ -212,10 +234,10 @@ int cmd_run(const CommandArgs &argv)
         throw InvalidInputError("give one of --resolution, --b1 and --size-cm");
     PipelineOptions options = pipeline_options(args);
     const WriteOptions write = write_options(args);
-    for (const std::string &out : outputs)
+    for (const std::string& out : outputs)
         check_output_name(out);
 
-    const std::string &path = args.positional()[0];
+    const std::string& path = args.positional()[0];
     const OwnedKits owned = parse_owned_kits(args.value("--have").value_or(""));
     const bool fit = args.has("--fit-kits");
     if (fit && owned.empty())
@@ -232,7 +254,7 @@ int cmd_run(const CommandArgs &argv)
     PipelineCallbacks callbacks;
     const bool show_progress = isatty(STDERR_FILENO) != 0;
     if (show_progress)
-        callbacks.progress = [](const AnnealProgress &p, Annealer &) {
+        callbacks.progress = [](const AnnealProgress& p, Annealer&) {
             std::cerr << "\r" << std::fixed << std::setprecision(1) << p.elapsed_seconds << " s  E "
                       << std::setprecision(4) << p.energy.total << "  T " << std::scientific << std::setprecision(2)
                       << p.temperature << std::defaultfloat << "  N " << p.nodes << "  " << p.commits << " commits   "
@@ -240,7 +262,7 @@ int cmd_run(const CommandArgs &argv)
         };
     // Before annealing (Z0 is known): does a model of the target's size typically fit the kits?
     if (!owned.empty() && !options.initial_only)
-        callbacks.initial = [&](const ZomeModel &z0) {
+        callbacks.initial = [&](const ZomeModel& z0) {
             const size_t target = options.anneal.target_nodes ? options.anneal.target_nodes : z0.nodes.size();
             std::cout << estimate_fit_line(target, have) << "\n" << std::flush;
         };
@@ -259,9 +281,9 @@ int cmd_run(const CommandArgs &argv)
         budget = balls_that_fit(have);
     }
     const auto plan_for = [&](size_t balls) {
-        return plan_kit_fit(surface.mesh, surface.report.genus,
-                            [&](const Vec3 &p) { return inside->is_inside(p); }, probe_of(*projector), balls,
-                            max_resolution);
+        return plan_kit_fit(
+            surface.mesh, surface.report.genus, [&](const Vec3& p) { return inside->is_inside(p); },
+            probe_of(*projector), balls, max_resolution);
     };
     PipelineResult r;
     bool fitted = false;
@@ -274,7 +296,8 @@ int cmd_run(const CommandArgs &argv)
                 throw InvalidInputError((attempt == 1 ? "" : "after " + std::to_string(attempt - 1) + " tries: ") +
                                         plan.message + " (" + owned_text(owned) + ")");
             std::cout << "Fit my kits (" << owned_text(owned) << "), try " << attempt << " of " << kFitAttempts << ": "
-                      << plan.message << ".\n" << std::flush;
+                      << plan.message << ".\n"
+                      << std::flush;
             options.b1 = 0.0;
             options.resolution = plan.resolution;
             options.anneal.target_nodes = plan.target_nodes;
@@ -296,7 +319,7 @@ int cmd_run(const CommandArgs &argv)
 
     const std::string stats = pipeline_stats_json(r);
     r.model.stats_json = pipeline_stats_json(r, -1);
-    for (const std::string &out : outputs)
+    for (const std::string& out : outputs)
         write_model_file(out, r.model, write);
     if (args.has("--size-cm"))
     {

@@ -43,15 +43,15 @@ std::string text_report(const ModelScore& s)
     line("parts            ", clearance_summary(s.clearance));
     const Fidelity& f = s.fidelity;
     const auto both = [](double b0) { return fixed(b0, 3) + " b0 = " + fixed(b0 * kMmPerB0, 1) + " mm"; };
-    line("RMS distance     ", both(f.rms_symmetric) + " (model→mesh " + both(f.model_to_surface.rms) +
-                                  ", mesh→model " + both(f.surface_to_model.rms) + ")");
-    line("largest distance ", "model→mesh " + both(f.model_to_surface.max) + ", mesh→model " +
-                                  both(f.surface_to_model.max));
-    line("Hausdorff        ", both(f.hausdorff) + ", " +
-                                  (f.gap_is_missed_surface ? "where the model misses the mesh" : "where the model stands off the mesh") +
-                                  (f.where == "middle" ? ", in the middle" : ", at the " + f.where) + " (" +
-                                  fixed(f.largest_gap_at.x(), 4) + ", " + fixed(f.largest_gap_at.y(), 4) + ", " +
-                                  fixed(f.largest_gap_at.z(), 4) + ")");
+    line("RMS distance     ", both(f.rms_symmetric) + " (model→mesh " + both(f.model_to_surface.rms) + ", mesh→model " +
+                                  both(f.surface_to_model.rms) + ")");
+    line("largest distance ",
+         "model→mesh " + both(f.model_to_surface.max) + ", mesh→model " + both(f.surface_to_model.max));
+    line("Hausdorff        ",
+         both(f.hausdorff) + ", " +
+             (f.gap_is_missed_surface ? "where the model misses the mesh" : "where the model stands off the mesh") +
+             (f.where == "middle" ? ", in the middle" : ", at the " + f.where) + " (" + fixed(f.largest_gap_at.x(), 4) +
+             ", " + fixed(f.largest_gap_at.y(), 4) + ", " + fixed(f.largest_gap_at.z(), 4) + ")");
     return out;
 }
 
@@ -62,7 +62,8 @@ int cmd_score(const CommandArgs& argv)
     const Args args(argv, {"--mesh", "--b0", "--samples"}, {"--json"});
     args.expect_positional(1, "one model file: zomeify score MODEL --mesh MESH [--b0 LENGTH] [--samples N] [--json]");
     const auto mesh_path = args.value("--mesh");
-    if (!mesh_path) throw InvalidInputError("--mesh MESH is required: the surface to score the model against");
+    if (!mesh_path)
+        throw InvalidInputError("--mesh MESH is required: the surface to score the model against");
     ZomeModel model = read_model_file(args.positional()[0]);
     const SurfaceProjector surface(load_surface(*mesh_path));
     if (args.has("--b0"))
@@ -82,7 +83,8 @@ int cmd_score(const CommandArgs& argv)
             normals.push_back({n.x(), n.y(), n.z()});
         }
         FaceRecovery faces = recover_faces(model, normals);
-        if (!faces.ok) throw InvalidInputError("cannot recover the model's faces: " + faces.error);
+        if (!faces.ok)
+            throw InvalidInputError("cannot recover the model's faces: " + faces.error);
         model.faces = std::move(faces.faces);
     }
     ScoreOptions options;

@@ -33,7 +33,8 @@ std::string estimate_fit_line(size_t balls, const PartCounts& have)
 {
     const PartCounts typical = part_counts(typical_parts(balls));
     return "Estimate: a model of about " + std::to_string(balls) + " balls typically " +
-           (fits(typical, have) ? std::string("fits your kits") : "does not fit your kits (" + fit_text(typical, have) + ")") +
+           (fits(typical, have) ? std::string("fits your kits")
+                                : "does not fit your kits (" + fit_text(typical, have) + ")") +
            "; checked again on the result.";
 }
 

@@ -37,8 +37,7 @@ class Builder
 public:
     Builder(const std::vector<Box3>& boxes, const BvhOptions& options, std::vector<BvhNode>& nodes,
             std::vector<uint32_t>& order)
-        : boxes_(boxes), nodes_(nodes), order_(order),
-          bins_(std::clamp(options.bins, 2, 64)),
+        : boxes_(boxes), nodes_(nodes), order_(order), bins_(std::clamp(options.bins, 2, 64)),
           max_leaf_(static_cast<uint32_t>(std::clamp(options.max_leaf_size, 1, 4)))
     {
         centroids_.reserve(boxes.size());

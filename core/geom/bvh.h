@@ -16,8 +16,8 @@ namespace zomeify {
 //! Build parameters. The defaults suit closest-point queries on meshes of 1k-1M triangles.
 struct BvhOptions
 {
-    int bins = 16;          //!< SAH bins per axis (2..64)
-    int max_leaf_size = 4;  //!< at most this many primitives per leaf (1..4)
+    int bins = 16;         //!< SAH bins per axis (2..64)
+    int max_leaf_size = 4; //!< at most this many primitives per leaf (1..4)
 };
 
 //! One flattened node: the boxes of its two children, stored per axis so both children are

@@ -60,10 +60,7 @@ inline bool lex_less(const Vec3& a, const Vec3& b) noexcept
 }
 
 //! t clamped to [0, 1]; NaN becomes 0.
-inline double clamp01(double t) noexcept
-{
-    return t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0;
-}
+inline double clamp01(double t) noexcept { return t > 0.0 ? (t < 1.0 ? t : 1.0) : 0.0; }
 
 //! Closest point of segment [a, b] to p as its parameter and squared distance. The residual is
 //! measured from the nearer named point (a or b at the clamps), so answers at the ends are exact
@@ -231,8 +228,8 @@ inline bool segment_intersects_triangle(const Vec3& p_in, const Vec3& q_in, cons
     // Within tol of the plane (coplanar), a sliver, or a near miss at a grazing angle: the segment
     // meets the closed triangle if it comes within tol of one of its edges or has an end on it.
     return point_triangle_distance_squared(p, a, b, c) <= tol2 || point_triangle_distance_squared(q, a, b, c) <= tol2 ||
-           segment_segment_distance_squared(p, q, a, b) <= tol2 || segment_segment_distance_squared(p, q, b, c) <= tol2 ||
-           segment_segment_distance_squared(p, q, a, c) <= tol2;
+           segment_segment_distance_squared(p, q, a, b) <= tol2 ||
+           segment_segment_distance_squared(p, q, b, c) <= tol2 || segment_segment_distance_squared(p, q, a, c) <= tol2;
 }
 
 //! \name The clash rules (core/zome/clearance_rules.h) on positions in b0
@@ -245,10 +242,7 @@ inline constexpr double kMinBallStrutSquared = kMinBallStrut * kMinBallStrut;
 inline constexpr double kMinStrutStrutSquared = kMinStrutStrut * kMinStrutStrut;
 
 //! Two ball centres closer than kMinBallBall.
-inline bool balls_clash(const Vec3& a, const Vec3& b) noexcept
-{
-    return (a - b).squaredNorm() < kMinBallBallSquared;
-}
+inline bool balls_clash(const Vec3& a, const Vec3& b) noexcept { return (a - b).squaredNorm() < kMinBallBallSquared; }
 
 //! A ball centre closer than kMinBallStrut to the axis [s0, s1] of a strut it does not hold.
 inline bool ball_strut_clash(const Vec3& ball, const Vec3& s0, const Vec3& s1) noexcept

@@ -43,10 +43,7 @@ TriangleMesh validated(TriangleMesh mesh)
 // Angle between two edge vectors; atan2 stays accurate for angles near 0 and pi, where acos of a
 // dot product would not. The portable one: libm's atan2 differs in the last bit between glibc and
 // musl, and these angles weight the vertex normals the energy reads.
-double corner_angle(const Vec3& e1, const Vec3& e2)
-{
-    return portable_angle(e1.cross(e2).norm(), e1.dot(e2));
-}
+double corner_angle(const Vec3& e1, const Vec3& e2) { return portable_angle(e1.cross(e2).norm(), e1.dot(e2)); }
 
 // Queries are done in float relative to the BVH origin while the magnitude (largest coordinate
 // of the query plus the mesh's half extent) stays within this range: squares of distances then
@@ -189,8 +186,8 @@ ClosestPoint SurfaceProjector::project(const Vec3& p, uint32_t hint) const
     // Measured by the same kernel as the search's candidates, so that the hint and the search
     // agree bit for bit on its distance and ties are broken alike (closer_than).
     const auto& tri = mesh_.triangles[hint];
-    double best = point_triangle_distance_squared(p, mesh_.positions[tri[0]], mesh_.positions[tri[1]],
-                                                  mesh_.positions[tri[2]]);
+    double best =
+        point_triangle_distance_squared(p, mesh_.positions[tri[0]], mesh_.positions[tri[1]], mesh_.positions[tri[2]]);
     uint32_t best_id = hint;
     search(p, best, best_id);
     return finish(p, best_id);

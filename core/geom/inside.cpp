@@ -13,9 +13,7 @@ InsideTest::InsideTest(const SurfaceProjector& projector) : projector_(projector
     const std::vector<Vec3>& face_normals = projector.face_normals();
     std::unordered_map<uint64_t, Vec3> edge_sum;
     edge_sum.reserve(mesh.triangles.size() * 2);
-    auto key = [](uint32_t a, uint32_t b) {
-        return a < b ? (uint64_t{a} << 32) | b : (uint64_t{b} << 32) | a;
-    };
+    auto key = [](uint32_t a, uint32_t b) { return a < b ? (uint64_t{a} << 32) | b : (uint64_t{b} << 32) | a; };
     for (size_t t = 0; t < mesh.triangles.size(); ++t)
     {
         const auto& tri = mesh.triangles[t];
@@ -60,10 +58,7 @@ Vec3 InsideTest::pseudo_normal(uint32_t t, TriangleFeature feature) const
     return projector_.face_normals()[t];
 }
 
-bool InsideTest::is_inside(const Vec3& p) const
-{
-    return is_inside(p, projector_.project(p));
-}
+bool InsideTest::is_inside(const Vec3& p) const { return is_inside(p, projector_.project(p)); }
 
 bool InsideTest::is_inside(const Vec3& p, const ClosestPoint& closest) const
 {

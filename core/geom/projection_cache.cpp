@@ -15,10 +15,7 @@ namespace {
 
 // The caller's key may be a weak hash of small integers; mix it so both the shard (high bits)
 // and the slot (low bits) see every input bit.
-uint64_t mix(uint64_t x)
-{
-    return mix64(x);
-}
+uint64_t mix(uint64_t x) { return mix64(x); }
 
 struct Entry
 {

@@ -12,10 +12,7 @@ namespace {
 
 constexpr float kPi = 3.14159265358979f;
 
-float srgb_to_linear(float c)
-{
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
+float srgb_to_linear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
 
 std::array<float, 3> linear(const std::array<float, 3>& srgb)
 {
@@ -131,20 +128,11 @@ std::array<float, 3> zome_color_srgb(Color c)
     return {1, 1, 1};
 }
 
-std::array<float, 3> ball_color_srgb()
-{
-    return {0.93f, 0.93f, 0.93f};
-}
+std::array<float, 3> ball_color_srgb() { return {0.93f, 0.93f, 0.93f}; }
 
-std::array<float, 3> zome_color_linear(Color c)
-{
-    return linear(zome_color_srgb(c));
-}
+std::array<float, 3> zome_color_linear(Color c) { return linear(zome_color_srgb(c)); }
 
-std::array<float, 3> ball_color_linear()
-{
-    return linear(ball_color_srgb());
-}
+std::array<float, 3> ball_color_linear() { return linear(ball_color_srgb()); }
 
 BuildGeometry build_geometry(const ZomeModel& model)
 {

@@ -48,10 +48,10 @@ struct Placement
 
 struct BuildGeometry
 {
-    std::vector<std::array<float, 3>> ball_centres;                        //!< mm, on the table
-    std::array<std::vector<Placement>, kStrutKindCount> struts_by_kind;    //!< per StrutKind
-    std::array<double, 3> size_mm{};   //!< extent of the balls (centres ± radius), x/y/z
-    std::array<double, 3> shift_mm{};  //!< what was added to the model's own coordinates (in mm)
+    std::vector<std::array<float, 3>> ball_centres;                     //!< mm, on the table
+    std::array<std::vector<Placement>, kStrutKindCount> struts_by_kind; //!< per StrutKind
+    std::array<double, 3> size_mm{};  //!< extent of the balls (centres ± radius), x/y/z
+    std::array<double, 3> shift_mm{}; //!< what was added to the model's own coordinates (in mm)
 };
 
 //! Placements of every ball and strut, centred on the table (InvalidInputError if a strut is

@@ -56,9 +56,10 @@ int add_mesh(tinygltf::Model& m, const SimpleMesh& mesh, int material, const std
     m.accessors[static_cast<size_t>(pos)].maxValues.assign(hi.begin(), hi.end());
     const int nrm_view = add_view(m, mesh.normals.data(), mesh.normals.size() * 12, TINYGLTF_TARGET_ARRAY_BUFFER);
     const int nrm = add_accessor(m, nrm_view, TINYGLTF_COMPONENT_TYPE_FLOAT, TINYGLTF_TYPE_VEC3, mesh.normals.size());
-    const int idx_view = add_view(m, mesh.indices.data(), mesh.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-    const int idx = add_accessor(m, idx_view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR,
-                                 mesh.indices.size());
+    const int idx_view =
+        add_view(m, mesh.indices.data(), mesh.indices.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
+    const int idx =
+        add_accessor(m, idx_view, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT, TINYGLTF_TYPE_SCALAR, mesh.indices.size());
     tinygltf::Primitive prim;
     prim.attributes["POSITION"] = pos;
     prim.attributes["NORMAL"] = nrm;
@@ -125,13 +126,13 @@ std::string write_glb(const ZomeModel& model)
         const int c = static_cast<int>(kind_color(info.kind));
         if (color_mat[c] < 0)
             color_mat[c] = add_material(m, std::string(info.color), zome_color_linear(kind_color(info.kind)));
-        const int mesh = add_mesh(m, make_cylinder(static_cast<float>(kStrutRadiusMm * kM),
-                                                   static_cast<float>(info.length_mm * kM), 12),
-                                  color_mat[c], std::string(info.name));
+        const int mesh = add_mesh(
+            m, make_cylinder(static_cast<float>(kStrutRadiusMm * kM), static_cast<float>(info.length_mm * kM), 12),
+            color_mat[c], std::string(info.name));
         for (const Placement& p : placements)
         {
-            tinygltf::Node* n = add_node(std::string(info.part_code) + " strut " + std::to_string(p.index), mesh,
-                                         p.translation);
+            tinygltf::Node* n =
+                add_node(std::string(info.part_code) + " strut " + std::to_string(p.index), mesh, p.translation);
             n->rotation.assign(p.rotation.begin(), p.rotation.end());
         }
     }

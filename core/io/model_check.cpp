@@ -22,7 +22,8 @@ void check_model(const ZomeModel& model)
 {
     const size_t n = model.nodes.size();
     if (n > kMaxModelNodes)
-        throw InvalidInputError("too many nodes: " + std::to_string(n) + " (limit " + std::to_string(kMaxModelNodes) + ")");
+        throw InvalidInputError("too many nodes: " + std::to_string(n) + " (limit " + std::to_string(kMaxModelNodes) +
+                                ")");
     if (model.struts.size() > kMaxModelStruts)
         throw InvalidInputError("too many struts: " + std::to_string(model.struts.size()));
     if (model.faces.size() > kMaxModelFaces)
@@ -46,8 +47,8 @@ void check_model(const ZomeModel& model)
     {
         const auto& st = model.struts[s];
         if (st[0] >= n || st[1] >= n)
-            throw InvalidInputError(strut_name(s, st) + " refers to a node that does not exist (" +
-                                    std::to_string(n) + " nodes)");
+            throw InvalidInputError(strut_name(s, st) + " refers to a node that does not exist (" + std::to_string(n) +
+                                    " nodes)");
         if (st[0] == st[1])
             throw InvalidInputError(strut_name(s, st) + " joins a node to itself");
         const ZVec v = model.nodes[st[1]] - model.nodes[st[0]];
@@ -55,8 +56,8 @@ void check_model(const ZomeModel& model)
         if (id < 0)
         {
             const auto d = v.to_double();
-            throw InvalidInputError(strut_name(s, st) + " is not a Zome strut (vector " + std::to_string(d[0]) +
-                                    ", " + std::to_string(d[1]) + ", " + std::to_string(d[2]) + ")");
+            throw InvalidInputError(strut_name(s, st) + " is not a Zome strut (vector " + std::to_string(d[0]) + ", " +
+                                    std::to_string(d[1]) + ", " + std::to_string(d[2]) + ")");
         }
         const uint64_t lo = std::min(st[0], st[1]), hi = std::max(st[0], st[1]);
         if (!seen_struts.insert(lo << 32 | hi).second)

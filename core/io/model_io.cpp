@@ -85,10 +85,7 @@ std::string write_model_buffer(const ZomeModel& model, const std::string& file_n
     throw InvalidInputError("unknown model format");
 }
 
-void check_writable_model_name(const std::string& path)
-{
-    (void)format_of(path, true);
-}
+void check_writable_model_name(const std::string& path) { (void)format_of(path, true); }
 
 void write_model_file(const std::string& path, const ZomeModel& model, const WriteOptions& options)
 {

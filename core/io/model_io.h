@@ -24,8 +24,7 @@ ZomeModel read_model_file(const std::string& path);
 //! Reads a model from bytes; `file_name` decides the format by its extension.
 ZomeModel read_model_buffer(std::string_view bytes, const std::string& file_name);
 //! The model in the format named by the extension of `file_name`.
-std::string write_model_buffer(const ZomeModel& model, const std::string& file_name,
-                               const WriteOptions& options = {});
+std::string write_model_buffer(const ZomeModel& model, const std::string& file_name, const WriteOptions& options = {});
 void write_model_file(const std::string& path, const ZomeModel& model, const WriteOptions& options = {});
 //! Throws the InvalidInputError write_model_file would for a file name whose format it cannot
 //! write, before any work is done.

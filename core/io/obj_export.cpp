@@ -46,7 +46,8 @@ void emit(std::ostringstream& out, size_t& vertex_base, const ObjTemplate& t, co
     {
         const auto p = place(at, v);
         std::snprintf(line, sizeof line, unit == 1.0 ? "v %.3f %.3f %.3f\n" : "v %.6f %.6f %.6f\n",
-                      static_cast<double>(p[0]) * unit, static_cast<double>(p[1]) * unit, static_cast<double>(p[2]) * unit);
+                      static_cast<double>(p[0]) * unit, static_cast<double>(p[1]) * unit,
+                      static_cast<double>(p[2]) * unit);
         out << line;
     }
     for (size_t i = 0; i + 2 < t.indices.size(); i += 3)
@@ -81,7 +82,8 @@ ObjExport write_obj(const ZomeModel& model, const std::string& mtl_name, ObjUnit
     const double unit = metres ? 0.001 : 1.0;
     std::ostringstream obj, mtl;
     char size[160];
-    std::snprintf(size, sizeof size, "# size %.1f x %.1f x %.1f mm (x, y, z); y up; centred in x and z, resting on y = 0\n",
+    std::snprintf(size, sizeof size,
+                  "# size %.1f x %.1f x %.1f mm (x, y, z); y up; centred in x and z, resting on y = 0\n",
                   geo.size_mm[0], geo.size_mm[1], geo.size_mm[2]);
     obj << "# zomeify: " << model.nodes.size() << " balls, " << model.struts.size() << " struts\n";
     obj << "# units: " << (metres ? "metres (m)" : "millimetres (mm); import at scale 0.001 for metres") << "\n"

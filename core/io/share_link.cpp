@@ -19,10 +19,7 @@ namespace {
 constexpr uint8_t kFlagTransform = 1, kFlagFaces = 2, kFlagFaceExceptions = 4;
 constexpr uint8_t kNibbleEscape = 15;
 
-[[noreturn]] void fail(const std::string& what)
-{
-    throw InvalidInputError("this share link is damaged: " + what);
-}
+[[noreturn]] void fail(const std::string& what) { throw InvalidInputError("this share link is damaged: " + what); }
 
 struct Neighbour
 {
@@ -30,10 +27,7 @@ struct Neighbour
     uint32_t strut;
 };
 
-bool is_identity(const ModelTransform& t)
-{
-    return t == ModelTransform{};
-}
+bool is_identity(const ModelTransform& t) { return t == ModelTransform{}; }
 
 // The struts as a traversal from one root per component: nodes in discovery order, and for each
 // node the struts it introduces, sorted by vector id.
@@ -43,7 +37,7 @@ struct Traversal
     std::vector<uint64_t> counts; // per node in discovery order
     std::vector<uint8_t> ids;     // vector id of every strut
     std::vector<uint32_t> new_index;
-    std::vector<ZVec> nodes;      // positions in discovery order
+    std::vector<ZVec> nodes;                     // positions in discovery order
     std::vector<std::array<uint32_t, 2>> struts; // in the new numbering, in link order
 };
 
@@ -313,7 +307,9 @@ std::string encode_share_link(const ZomeModel& m)
             w.zigzag(c);
     for (size_t k = 0; k < t.counts.size(); k += 2)
     {
-        auto nibble = [&](size_t i) { return i < t.counts.size() ? std::min<uint64_t>(t.counts[i], kNibbleEscape) : 0; };
+        auto nibble = [&](size_t i) {
+            return i < t.counts.size() ? std::min<uint64_t>(t.counts[i], kNibbleEscape) : 0;
+        };
         w.u8(static_cast<uint8_t>(nibble(k) | nibble(k + 1) << 4));
     }
     for (uint64_t c : t.counts)

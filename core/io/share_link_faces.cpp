@@ -13,10 +13,7 @@ namespace {
 
 constexpr size_t kMixedRadixLimit = 20; // 19! < 2^63
 
-[[noreturn]] void fail(const std::string& what)
-{
-    throw InvalidInputError("this share link is damaged: " + what);
-}
+[[noreturn]] void fail(const std::string& what) { throw InvalidInputError("this share link is damaged: " + what); }
 
 // Sorted neighbour lists, the shared reference frame of the explicit face encoding.
 std::vector<std::vector<uint32_t>> sorted_neighbours(size_t n, const StrutList& struts)

@@ -15,10 +15,7 @@ namespace zomeify {
 
 namespace {
 
-[[noreturn]] void fail(const std::string& what)
-{
-    throw InvalidInputError("not a valid VEF file: " + what);
-}
+[[noreturn]] void fail(const std::string& what) { throw InvalidInputError("not a valid VEF file: " + what); }
 
 // Whitespace tokenizer over the whole text, counting tokens left for size checks.
 class Tokens
@@ -72,7 +69,8 @@ size_t parse_count(Tokens& t, const char* what, size_t tokens_per_item, size_t l
     if (static_cast<uint64_t>(n) > limit)
         fail(std::string(what) + " count " + std::to_string(n) + " is larger than the limit " + std::to_string(limit));
     if (static_cast<uint64_t>(n) * tokens_per_item > t.left())
-        fail(std::string(what) + " count " + std::to_string(n) + " is larger than the file holds (is the file truncated?)");
+        fail(std::string(what) + " count " + std::to_string(n) +
+             " is larger than the file holds (is the file truncated?)");
     return static_cast<size_t>(n);
 }
 
@@ -298,10 +296,7 @@ ZomeModel read_vef(std::string_view text, VefReadInfo* info)
     return model;
 }
 
-ZomeModel read_vef_file(const std::string& path, VefReadInfo* info)
-{
-    return read_vef(read_file_bytes(path), info);
-}
+ZomeModel read_vef_file(const std::string& path, VefReadInfo* info) { return read_vef(read_file_bytes(path), info); }
 
 std::string write_vef(const ZomeModel& model, const VefWriteOptions& options)
 {

@@ -62,10 +62,7 @@ GoldenFraction GoldenFraction::operator+(const GoldenFraction& o) const
     return reduced(x + y, l);
 }
 
-GoldenFraction GoldenFraction::operator-(const GoldenFraction& o) const
-{
-    return *this + GoldenFraction{-o.n, o.d};
-}
+GoldenFraction GoldenFraction::operator-(const GoldenFraction& o) const { return *this + GoldenFraction{-o.n, o.d}; }
 
 GoldenFraction GoldenFraction::operator*(const GoldenFraction& o) const
 {
@@ -84,7 +81,8 @@ GoldenFraction parse_vef_number(std::string_view token, bool rational_only, cons
     for (size_t start = 0;;)
     {
         const size_t comma = inner.find(',', start);
-        factors.push_back(inner.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
+        factors.push_back(
+            inner.substr(start, comma == std::string_view::npos ? std::string_view::npos : comma - start));
         if (comma == std::string_view::npos)
             break;
         start = comma + 1;

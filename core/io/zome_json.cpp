@@ -17,10 +17,7 @@ namespace {
 constexpr const char* kFormat = "zomeify-model";
 constexpr int kVersion = 1;
 
-[[noreturn]] void fail(const std::string& what)
-{
-    throw InvalidInputError("not a valid .zome.json model: " + what);
-}
+[[noreturn]] void fail(const std::string& what) { throw InvalidInputError("not a valid .zome.json model: " + what); }
 
 const json& member(const json& obj, const char* key)
 {
@@ -45,7 +42,8 @@ int64_t integer(const json& v, const std::string& where, int64_t lo, int64_t hi)
 {
     if (!v.is_number_integer())
         fail(where + " is not an integer");
-    const int64_t x = v.is_number_unsigned() && v.get<uint64_t>() > static_cast<uint64_t>(hi) ? hi + 1 : v.get<int64_t>();
+    const int64_t x =
+        v.is_number_unsigned() && v.get<uint64_t>() > static_cast<uint64_t>(hi) ? hi + 1 : v.get<int64_t>();
     if (x < lo || x > hi)
         fail(where + " is out of range");
     return x;
@@ -124,8 +122,8 @@ ZomeModel read_zome_json(std::string_view text)
         if (!p.is_array() || p.size() != 6)
             fail(where + " is not 6 integers");
         for (size_t k = 0; k < 6; ++k)
-            model.nodes[i].c[k] = static_cast<int32_t>(integer(p[k], where, std::numeric_limits<int32_t>::min() / 4,
-                                                               std::numeric_limits<int32_t>::max() / 4));
+            model.nodes[i].c[k] = static_cast<int32_t>(
+                integer(p[k], where, std::numeric_limits<int32_t>::min() / 4, std::numeric_limits<int32_t>::max() / 4));
     }
     const json& struts = array_member(doc, "struts", kMaxModelStruts);
     model.struts.resize(struts.size());
@@ -149,7 +147,8 @@ ZomeModel read_zome_json(std::string_view text)
             if (!face.is_array() || face.size() < 3 || face.size() > kMaxFaceSize)
                 fail(where + " is not a list of 3 to " + std::to_string(kMaxFaceSize) + " node indices");
             for (const json& v : face)
-                model.faces[f].push_back(static_cast<uint32_t>(integer(v, where, 0, std::numeric_limits<uint32_t>::max())));
+                model.faces[f].push_back(
+                    static_cast<uint32_t>(integer(v, where, 0, std::numeric_limits<uint32_t>::max())));
         }
     }
     if (doc.contains("transform"))

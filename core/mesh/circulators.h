@@ -78,10 +78,7 @@ public:
         ++*this;
         return tmp;
     }
-    friend bool operator==(const CycleIterator& a, const CycleIterator& b)
-    {
-        return a.h_ == b.h_ && a.lap_ == b.lap_;
-    }
+    friend bool operator==(const CycleIterator& a, const CycleIterator& b) { return a.h_ == b.h_ && a.lap_ == b.lap_; }
     //! The halfedge the iterator stands on.
     Halfedge halfedge() const { return h_; }
 

@@ -44,8 +44,8 @@ ZomeMesh from_model(const ZomeModel& model, const FromModelOptions& options)
     {
         const Edge e(i);
         const Halfedge h = SurfaceMesh::halfedge(e, 0);
-        const std::string name = "edge " + std::to_string(mesh.from_vertex(h).idx()) + "-"
-            + std::to_string(mesh.to_vertex(h).idx());
+        const std::string name =
+            "edge " + std::to_string(mesh.from_vertex(h).idx()) + "-" + std::to_string(mesh.to_vertex(h).idx());
         if (options.require_closed && mesh.is_boundary(e))
             throw InvalidInputError("the surface is not closed: " + name + " has a face on one side only");
         if (options.require_zome && mesh.vector_id(h) == kNoZomeVector)
@@ -57,8 +57,8 @@ ZomeMesh from_model(const ZomeModel& model, const FromModelOptions& options)
         for (size_t i = 0; i < model.struts.size(); ++i)
         {
             const auto [a, b] = model.struts[i];
-            const std::string name = "strut " + std::to_string(i) + " (" + std::to_string(a) + "-"
-                + std::to_string(b) + ")";
+            const std::string name =
+                "strut " + std::to_string(i) + " (" + std::to_string(a) + "-" + std::to_string(b) + ")";
             if (a >= mesh.vertices_size() || b >= mesh.vertices_size())
                 throw InvalidInputError(name + " uses a node out of range");
             const Edge e = mesh.find_edge(Vertex(a), Vertex(b));
@@ -69,8 +69,8 @@ ZomeMesh from_model(const ZomeModel& model, const FromModelOptions& options)
             matched[e.idx()] = 1;
         }
         if (model.struts.size() != mesh.n_edges())
-            throw InvalidInputError("the faces have " + std::to_string(mesh.n_edges()) + " edges but the model lists "
-                                    + std::to_string(model.struts.size()) + " struts");
+            throw InvalidInputError("the faces have " + std::to_string(mesh.n_edges()) + " edges but the model lists " +
+                                    std::to_string(model.struts.size()) + " struts");
     }
     return mesh;
 }

@@ -70,10 +70,7 @@ public:
                 data_[i] = std::move(data_[kept[i]]);
         data_.resize(kept.size());
     }
-    std::unique_ptr<BasePropertyArray> clone() const override
-    {
-        return std::make_unique<PropertyArray<T>>(*this);
-    }
+    std::unique_ptr<BasePropertyArray> clone() const override { return std::make_unique<PropertyArray<T>>(*this); }
 
     std::vector<T>& vector() { return data_; }
     const std::vector<T>& vector() const { return data_; }

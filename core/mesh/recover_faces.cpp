@@ -22,7 +22,8 @@ bool sorted_rotations(const ZomeModel& model, const std::vector<Dir>& normals,
         rotation[s[1]].push_back(s[0]);
     }
     std::vector<Dir> pos(n);
-    for (size_t i = 0; i < n; ++i) pos[i] = model.nodes[i].to_double();
+    for (size_t i = 0; i < n; ++i)
+        pos[i] = model.nodes[i].to_double();
     for (size_t v = 0; v < n; ++v)
     {
         if (rotation[v].size() < 3)
@@ -43,7 +44,8 @@ bool sorted_rotations(const ZomeModel& model, const std::vector<Dir>& normals,
             angled.emplace_back(std::atan2(dot(d, t2), dot(d, t1)), u);
         }
         std::sort(angled.begin(), angled.end());
-        for (size_t k = 0; k < angled.size(); ++k) rotation[v][k] = angled[k].second;
+        for (size_t k = 0; k < angled.size(); ++k)
+            rotation[v][k] = angled[k].second;
     }
     return true;
 }
@@ -66,7 +68,8 @@ FaceRecovery recover_faces(const ZomeModel& model, const std::vector<Dir>& norma
             return out;
         }
     std::vector<std::vector<uint32_t>> rotation;
-    if (!sorted_rotations(model, normals, rotation, out.error)) return out;
+    if (!sorted_rotations(model, normals, rotation, out.error))
+        return out;
 
     out.faces = trace_faces(rotation);
     size_t bad = 0, largest = 0;
@@ -84,8 +87,8 @@ FaceRecovery recover_faces(const ZomeModel& model, const std::vector<Dir>& norma
     if (bad > 0)
     {
         out.error = std::to_string(bad) + " of " + std::to_string(out.faces.size()) +
-                    " traced faces are not simple triangles or quads (largest has " +
-                    std::to_string(largest) + " corners): the normals do not order the struts as a surface";
+                    " traced faces are not simple triangles or quads (largest has " + std::to_string(largest) +
+                    " corners): the normals do not order the struts as a surface";
         out.faces.clear();
         return out;
     }
@@ -98,7 +101,8 @@ std::vector<std::vector<uint32_t>> trace_faces(const std::vector<std::vector<uin
     const size_t n = rotation.size();
     // Darts u→v are numbered by (u, position of v in u's rotation).
     std::vector<size_t> first(n + 1, 0);
-    for (size_t v = 0; v < n; ++v) first[v + 1] = first[v] + rotation[v].size();
+    for (size_t v = 0; v < n; ++v)
+        first[v + 1] = first[v] + rotation[v].size();
     auto index_in = [&](uint32_t at, uint32_t of) -> size_t {
         const auto& r = rotation[at];
         return static_cast<size_t>(std::find(r.begin(), r.end(), of) - r.begin());
@@ -108,7 +112,8 @@ std::vector<std::vector<uint32_t>> trace_faces(const std::vector<std::vector<uin
     for (uint32_t u = 0; u < n; ++u)
         for (size_t k = 0; k < rotation[u].size(); ++k)
         {
-            if (used[first[u] + k]) continue;
+            if (used[first[u] + k])
+                continue;
             std::vector<uint32_t> face;
             uint32_t a = u;
             size_t ak = k;
@@ -121,7 +126,8 @@ std::vector<std::vector<uint32_t>> trace_faces(const std::vector<std::vector<uin
                 const uint32_t b = rotation[a][ak];
                 const auto& rb = rotation[b];
                 const size_t at = index_in(b, a);
-                if (at == rb.size()) break; // a strut listed at one end only
+                if (at == rb.size())
+                    break; // a strut listed at one end only
                 ak = (at + rb.size() - 1) % rb.size();
                 a = b;
             }
@@ -136,13 +142,16 @@ std::vector<Dir> centroid_normals(const ZomeModel& model)
     for (const ZVec& p : model.nodes)
     {
         const Dir d = p.to_double();
-        for (int k = 0; k < 3; ++k) c[k] += d[k];
+        for (int k = 0; k < 3; ++k)
+            c[k] += d[k];
     }
     const double count = static_cast<double>(std::max<size_t>(model.nodes.size(), 1));
-    for (double& x : c) x /= count;
+    for (double& x : c)
+        x /= count;
     std::vector<Dir> normals;
     normals.reserve(model.nodes.size());
-    for (const ZVec& p : model.nodes) normals.push_back(sub(p.to_double(), c));
+    for (const ZVec& p : model.nodes)
+        normals.push_back(sub(p.to_double(), c));
     return normals;
 }
 

@@ -18,10 +18,7 @@ using HalfedgeBuffer = detail::SmallBuffer<Halfedge, kInline>;
 using VertexBuffer = detail::SmallBuffer<Vertex, kInline>;
 using FaceBuffer = detail::SmallBuffer<Face, kInline>;
 
-uint64_t directed_key(MeshIndex a, MeshIndex b)
-{
-    return (static_cast<uint64_t>(a) << 32) | b;
-}
+uint64_t directed_key(MeshIndex a, MeshIndex b) { return (static_cast<uint64_t>(a) << 32) | b; }
 
 } // namespace
 
@@ -47,10 +44,7 @@ const char* to_string(AddFaceStatus status)
     return "unknown";
 }
 
-SurfaceMesh::SurfaceMesh()
-{
-    add_builtin_properties();
-}
+SurfaceMesh::SurfaceMesh() { add_builtin_properties(); }
 
 SurfaceMesh::SurfaceMesh(const SurfaceMesh& other)
     : vprops_(other.vprops_), hprops_(other.hprops_), eprops_(other.eprops_), fprops_(other.fprops_),
@@ -297,8 +291,8 @@ AddFaceStatus SurfaceMesh::check_add_face(std::span<const Vertex> vertices) cons
     {
         const Halfedge inner_prev = hs[i];
         const Halfedge inner_next = hs[(i + 1) % n];
-        if (inner_prev.is_valid() && inner_next.is_valid() && next(inner_prev) != inner_next
-            && !find_free_gap(*this, inner_prev, inner_next).is_valid())
+        if (inner_prev.is_valid() && inner_next.is_valid() && next(inner_prev) != inner_next &&
+            !find_free_gap(*this, inner_prev, inner_next).is_valid())
             return AddFaceStatus::RelinkFailed;
     }
     return AddFaceStatus::Ok;
@@ -676,9 +670,9 @@ void SurfaceMesh::build_faces(const std::vector<std::vector<MeshIndex>>& faces)
         {
             const MeshIndex a = poly[i], b = poly[(i + 1) % n];
             if (directed.count(directed_key(a, b)))
-                throw TopologyError("edge " + std::to_string(a) + "-" + std::to_string(b) + " of " + where
-                                    + " is used twice in the same direction: the faces are not "
-                                      "consistently oriented, or the edge has more than two faces");
+                throw TopologyError("edge " + std::to_string(a) + "-" + std::to_string(b) + " of " + where +
+                                    " is used twice in the same direction: the faces are not "
+                                    "consistently oriented, or the edge has more than two faces");
             Halfedge h;
             const auto twin = directed.find(directed_key(b, a));
             if (twin != directed.end())
@@ -705,8 +699,8 @@ void SurfaceMesh::build_faces(const std::vector<std::vector<MeshIndex>>& faces)
         if (!vout_[from].is_valid() || (is_boundary(h) && !is_boundary(vout_[from])))
             vout_[from] = h;
         else if (is_boundary(h) && is_boundary(vout_[from]))
-            throw TopologyError("vertex " + std::to_string(from.idx())
-                                + " is non-manifold: it lies on two separate boundary gaps");
+            throw TopologyError("vertex " + std::to_string(from.idx()) +
+                                " is non-manifold: it lies on two separate boundary gaps");
     }
     for (MeshIndex hi = 0; hi < halfedges_size(); ++hi)
     {
@@ -718,8 +712,7 @@ void SurfaceMesh::build_faces(const std::vector<std::vector<MeshIndex>>& faces)
     {
         const Vertex v(vi);
         if (degree[vi] != 0 && valence(v) != degree[vi])
-            throw TopologyError("vertex " + std::to_string(vi)
-                                + " is non-manifold: its faces form more than one fan");
+            throw TopologyError("vertex " + std::to_string(vi) + " is non-manifold: its faces form more than one fan");
     }
 }
 
@@ -735,10 +728,10 @@ void SurfaceMesh::reserve(size_t n_vertices, size_t n_edges, size_t n_faces)
 bool SurfaceMesh::has_capacity_for(size_t more_vertices, size_t more_edges, size_t more_faces) const
 {
     // The built-in arrays are representative: every array of a container is reserved together.
-    return vertices_size() + more_vertices <= vout_.vector().capacity()
-        && edges_size() + more_edges <= edeleted_.vector().capacity()
-        && halfedges_size() + 2 * more_edges <= links_.vector().capacity()
-        && faces_size() + more_faces <= fhalf_.vector().capacity() && has_extra_capacity_for(more_vertices);
+    return vertices_size() + more_vertices <= vout_.vector().capacity() &&
+           edges_size() + more_edges <= edeleted_.vector().capacity() &&
+           halfedges_size() + 2 * more_edges <= links_.vector().capacity() &&
+           faces_size() + more_faces <= fhalf_.vector().capacity() && has_extra_capacity_for(more_vertices);
 }
 
 void SurfaceMesh::garbage_collection(GarbageMap* map)

@@ -40,12 +40,12 @@ struct HalfedgeLinks
 enum class AddFaceStatus : uint8_t
 {
     Ok,
-    TooFewVertices,  //!< fewer than three vertices
-    InvalidVertex,   //!< a handle out of range or deleted
-    RepeatedVertex,  //!< a vertex occurs twice in the polygon
-    ComplexVertex,   //!< a vertex is already surrounded by faces (would become non-manifold)
-    ComplexEdge,     //!< an edge already has a face on this side (non-manifold or flipped face)
-    RelinkFailed     //!< the fans around a vertex cannot be ordered into one disc
+    TooFewVertices, //!< fewer than three vertices
+    InvalidVertex,  //!< a handle out of range or deleted
+    RepeatedVertex, //!< a vertex occurs twice in the polygon
+    ComplexVertex,  //!< a vertex is already surrounded by faces (would become non-manifold)
+    ComplexEdge,    //!< an edge already has a face on this side (non-manifold or flipped face)
+    RelinkFailed    //!< the fans around a vertex cannot be ordered into one disc
 };
 
 //! A short human-readable reason for a status.
@@ -123,10 +123,7 @@ public:
     Halfedge cw_rotated(Halfedge h) const { return next(opposite(h)); }
 
     bool is_boundary(Halfedge h) const { return !face(h).is_valid(); }
-    bool is_boundary(Edge e) const
-    {
-        return is_boundary(halfedge(e, 0)) || is_boundary(halfedge(e, 1));
-    }
+    bool is_boundary(Edge e) const { return is_boundary(halfedge(e, 0)) || is_boundary(halfedge(e, 1)); }
     //! Whether v is on a boundary (isolated vertices count as boundary).
     bool is_boundary(Vertex v) const
     {
@@ -246,13 +243,25 @@ public:
         return FaceProperty<T>(fprops_.get<T>(name));
     }
     template <class T>
-    void remove_property(VertexProperty<T>& p) { remove_array(vprops_, p); }
+    void remove_property(VertexProperty<T>& p)
+    {
+        remove_array(vprops_, p);
+    }
     template <class T>
-    void remove_property(HalfedgeProperty<T>& p) { remove_array(hprops_, p); }
+    void remove_property(HalfedgeProperty<T>& p)
+    {
+        remove_array(hprops_, p);
+    }
     template <class T>
-    void remove_property(EdgeProperty<T>& p) { remove_array(eprops_, p); }
+    void remove_property(EdgeProperty<T>& p)
+    {
+        remove_array(eprops_, p);
+    }
     template <class T>
-    void remove_property(FaceProperty<T>& p) { remove_array(fprops_, p); }
+    void remove_property(FaceProperty<T>& p)
+    {
+        remove_array(fprops_, p);
+    }
     std::vector<std::string> vertex_property_names() const { return vprops_.names(); }
     std::vector<std::string> halfedge_property_names() const { return hprops_.names(); }
     std::vector<std::string> edge_property_names() const { return eprops_.names(); }

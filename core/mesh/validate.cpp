@@ -36,10 +36,7 @@ const char* to_string(MeshProblem p)
     return "unknown";
 }
 
-bool ValidationReport::ok() const
-{
-    return total_problems() == 0;
-}
+bool ValidationReport::ok() const { return total_problems() == 0; }
 
 size_t ValidationReport::total_problems() const
 {
@@ -52,8 +49,7 @@ std::string ValidationReport::message() const
     if (ok())
     {
         os << "valid: " << n_vertices << " nodes, " << n_edges << " struts, " << n_faces << " faces, "
-           << components.size() << (components.size() == 1 ? " component" : " components") << ", genus "
-           << genus;
+           << components.size() << (components.size() == 1 ? " component" : " components") << ", genus " << genus;
         return os.str();
     }
     os << "invalid (" << total_problems() << " problems:";
@@ -235,11 +231,11 @@ private:
                 h = m_.ccw_rotated(h);
             } while (h != start && count <= degree[i]);
             if (count != degree[i])
-                report(MeshProblem::NonManifoldVertex, vn() + ": its " + std::to_string(degree[i])
-                                                           + " edges do not form one rotation cycle");
+                report(MeshProblem::NonManifoldVertex,
+                       vn() + ": its " + std::to_string(degree[i]) + " edges do not form one rotation cycle");
             else if (gaps[i] > 1)
-                report(MeshProblem::NonManifoldVertex, vn() + " touches " + std::to_string(gaps[i])
-                                                           + " boundary gaps (faces meet at a point)");
+                report(MeshProblem::NonManifoldVertex,
+                       vn() + " touches " + std::to_string(gaps[i]) + " boundary gaps (faces meet at a point)");
             if (gaps[i] > 0 && !m_.is_boundary(start))
                 report(MeshProblem::Connectivity, vn() + " is on a boundary but its halfedge is not");
             if (degree[i] < opt_.min_valence)
@@ -255,7 +251,8 @@ private:
             const Vertex va = m_.to_vertex(a);
             for (Halfedge b = m_.ccw_rotated(a); b != start; b = m_.ccw_rotated(b))
                 if (m_.to_vertex(b) == va && va.idx() > v.idx())
-                    report(MeshProblem::DoubleEdge, "vertex " + name(v) + " and " + name(va) + " are joined by two edges");
+                    report(MeshProblem::DoubleEdge,
+                           "vertex " + name(v) + " and " + name(va) + " are joined by two edges");
             a = m_.ccw_rotated(a);
             if (a == start)
                 break;
@@ -330,8 +327,8 @@ private:
         r_.boundary_loops = 0;
         for (MeshComponent& c : comps)
         {
-            c.euler_characteristic = static_cast<long>(c.vertices) - static_cast<long>(c.edges)
-                + static_cast<long>(c.faces);
+            c.euler_characteristic =
+                static_cast<long>(c.vertices) - static_cast<long>(c.edges) + static_cast<long>(c.faces);
             c.genus = static_cast<int>((2 - c.euler_characteristic - static_cast<long>(c.boundary_loops)) / 2);
             r_.genus += c.genus;
             r_.euler_characteristic += c.euler_characteristic;
@@ -360,22 +357,22 @@ void check_zome(const ZomeMesh& m, Validator& val)
         };
         if (id < 0)
         {
-            val.report(MeshProblem::NonZomeEdge, en() + " has vector " + [&] {
-                std::ostringstream os;
-                os << m.vector(h);
-                return os.str();
-            }() + ", not a Zome vector");
+            val.report(
+                MeshProblem::NonZomeEdge, en() + " has vector " + [&] {
+                    std::ostringstream os;
+                    os << m.vector(h);
+                    return os.str();
+                }() + ", not a Zome vector");
             if (m.vector_id(h) != kNoZomeVector || m.vector_id(SurfaceMesh::opposite(h)) != kNoZomeVector)
                 val.report(MeshProblem::WrongVectorId, en() + " stores a Zome vector id for a non-Zome vector");
             continue;
         }
         const int opposite_id = vector_id(opposite_slot(vector_slot(id)), vector_size(id));
         if (m.vector_id(h) != id || m.vector_id(SurfaceMesh::opposite(h)) != opposite_id)
-            val.report(MeshProblem::WrongVectorId, en() + " stores vector ids "
-                                                        + std::to_string(m.vector_id(h)) + "/"
-                                                        + std::to_string(m.vector_id(SurfaceMesh::opposite(h)))
-                                                        + ", expected " + std::to_string(id) + "/"
-                                                        + std::to_string(opposite_id));
+            val.report(MeshProblem::WrongVectorId, en() + " stores vector ids " + std::to_string(m.vector_id(h)) + "/" +
+                                                       std::to_string(m.vector_id(SurfaceMesh::opposite(h))) +
+                                                       ", expected " + std::to_string(id) + "/" +
+                                                       std::to_string(opposite_id));
     }
 
     std::unordered_map<ZVec, Vertex, ZVecHash> seen;
@@ -427,8 +424,8 @@ void check_zome(const ZomeMesh& m, Validator& val)
         }
     });
     if (m.position_index_size() != m.n_vertices())
-        val.report(MeshProblem::PositionIndex, "the position index has " + std::to_string(m.position_index_size())
-                                                   + " entries for " + std::to_string(m.n_vertices()) + " nodes");
+        val.report(MeshProblem::PositionIndex, "the position index has " + std::to_string(m.position_index_size()) +
+                                                   " entries for " + std::to_string(m.n_vertices()) + " nodes");
 }
 
 } // namespace

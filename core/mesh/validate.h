@@ -22,11 +22,11 @@ namespace zomeify {
 //! What validate() requires (the defaults are the annealer's invariants).
 struct ValidateOptions
 {
-    bool require_closed = true;  //!< no boundary halfedges
-    bool tri_quad_only = true;   //!< faces have 3 or 4 corners (otherwise any polygon)
-    bool check_zome = true;      //!< Zome vectors, stored ids, positions, slots (ZomeMesh only)
-    size_t min_valence = 3;      //!< every node has at least this many struts
-    size_t max_messages = 20;    //!< detailed messages kept in the report
+    bool require_closed = true; //!< no boundary halfedges
+    bool tri_quad_only = true;  //!< faces have 3 or 4 corners (otherwise any polygon)
+    bool check_zome = true;     //!< Zome vectors, stored ids, positions, slots (ZomeMesh only)
+    size_t min_valence = 3;     //!< every node has at least this many struts
+    size_t max_messages = 20;   //!< detailed messages kept in the report
 };
 
 //! The kinds of problem validate() reports.

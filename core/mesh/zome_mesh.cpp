@@ -23,10 +23,7 @@ ZomeMesh::ZomeMesh()
     zvec_ = add_halfedge_property<uint8_t>("h:zvector", kNoZomeVector);
 }
 
-ZomeMesh::ZomeMesh(const ZomeMesh& other) : SurfaceMesh(other), index_(other.index_)
-{
-    bind_properties();
-}
+ZomeMesh::ZomeMesh(const ZomeMesh& other) : SurfaceMesh(other), index_(other.index_) { bind_properties(); }
 
 ZomeMesh& ZomeMesh::operator=(const ZomeMesh& other)
 {
@@ -135,9 +132,9 @@ void ZomeMesh::on_edge_added(Edge e)
     const Halfedge h = halfedge(e, 0);
     update_vector_id(h);
     const uint8_t id = zvec_[h];
-    zvec_[opposite(h)] = id == kNoZomeVector
-        ? kNoZomeVector
-        : static_cast<uint8_t>(zomeify::vector_id(opposite_slot(vector_slot(id)), vector_size(id)));
+    zvec_[opposite(h)] =
+        id == kNoZomeVector ? kNoZomeVector
+                            : static_cast<uint8_t>(zomeify::vector_id(opposite_slot(vector_slot(id)), vector_size(id)));
 }
 
 void ZomeMesh::on_vertex_removing(Vertex v)
@@ -146,10 +143,7 @@ void ZomeMesh::on_vertex_removing(Vertex v)
         index_.erase(zpos_[v]);
 }
 
-void ZomeMesh::on_compacted()
-{
-    rebuild_index();
-}
+void ZomeMesh::on_compacted() { rebuild_index(); }
 
 void ZomeMesh::rebuild_index()
 {

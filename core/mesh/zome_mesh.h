@@ -40,10 +40,7 @@ public:
     //! by value: it may be another node's position, and appending can move the position array.)
     Vertex add_vertex(ZVec p);
     //! The node at p, or invalid (exact lookup, O(1)).
-    Vertex find_vertex(const ZVec& p) const
-    {
-        return index_.find(p);
-    }
+    Vertex find_vertex(const ZVec& p) const { return index_.find(p); }
     bool is_position_free(const ZVec& p) const { return !index_.contains(p); }
     const ZVec& position(Vertex v) const { return zpos_[v]; }
     //! The property holding all positions (indexed by vertex; deleted entries are stale).

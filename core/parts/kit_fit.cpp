@@ -12,7 +12,7 @@ namespace {
 // Struts per ball, kinds B0..R2, of the bunny annealed at 11 cells for 30 s (2.7 per ball). The red
 // R1 (0.31 per ball against 36 per Creator kit length) is what usually runs out first.
 constexpr std::array<double, kStrutKindCount> kStrutsPerBall = {0.411, 0.534, 0.108, 0.489, 0.446,
-                                                               0.129, 0.239, 0.313, 0.031};
+                                                                0.129, 0.239, 0.313, 0.031};
 
 } // namespace
 

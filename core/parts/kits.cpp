@@ -21,17 +21,15 @@ std::string normalised(std::string_view s)
     return out;
 }
 
-size_t ceil_div(size_t a, size_t b)
-{
-    return (a + b - 1) / b;
-}
+size_t ceil_div(size_t a, size_t b) { return (a + b - 1) / b; }
 
 // Need per colour: a kit holds the same number of each length, so only the largest length counts.
 std::array<size_t, 4> colour_needs(const PartCounts& need)
 {
     std::array<size_t, 4> c{};
     for (int k = 0; k < kStrutKindCount; ++k)
-        c[static_cast<size_t>(k / kSizeCount)] = std::max(c[static_cast<size_t>(k / kSizeCount)], need[static_cast<size_t>(k)]);
+        c[static_cast<size_t>(k / kSizeCount)] =
+            std::max(c[static_cast<size_t>(k / kSizeCount)], need[static_cast<size_t>(k)]);
     c[3] = need[kStrutKindCount];
     return c;
 }
@@ -56,7 +54,8 @@ const Kit& find_kit(std::string_view id_or_name)
     for (const Kit& k : standard_kits())
         if (normalised(k.id) == want || normalised(k.name) == want)
             return k;
-    throw InvalidInputError("unknown kit '" + std::string(id_or_name) + "' (known: basic, creator1, creator3, workshop)");
+    throw InvalidInputError("unknown kit '" + std::string(id_or_name) +
+                            "' (known: basic, creator1, creator3, workshop)");
 }
 
 PartCounts part_counts(const PartsList& parts)
@@ -95,7 +94,8 @@ KitPlan plan_kits(const PartsList& parts)
     // is then the least that completes the cover.
     std::array<size_t, 4> best{};
     size_t best_parts = std::numeric_limits<size_t>::max(), best_kits = best_parts;
-    const size_t max_w = covers_count(kits[0]), max_c3 = covers_count(kits[1]), max_c1 = std::min<size_t>(2, covers_count(kits[2]));
+    const size_t max_w = covers_count(kits[0]), max_c3 = covers_count(kits[1]),
+                 max_c1 = std::min<size_t>(2, covers_count(kits[2]));
     for (size_t w = 0; w <= max_w; ++w)
         for (size_t c3 = 0; c3 <= max_c3; ++c3)
             for (size_t c1 = 0; c1 <= max_c1; ++c1)
@@ -110,8 +110,8 @@ KitPlan plan_kits(const PartsList& parts)
                     if (have < need[c])
                         basic = std::max(basic, ceil_div(need[c] - have, per_basic));
                 }
-                const size_t bought = w * kits[0].part_count() + c3 * kits[1].part_count() +
-                                      c1 * kits[2].part_count() + basic * kits[3].part_count();
+                const size_t bought = w * kits[0].part_count() + c3 * kits[1].part_count() + c1 * kits[2].part_count() +
+                                      basic * kits[3].part_count();
                 const size_t count = w + c3 + c1 + basic;
                 if (bought < best_parts || (bought == best_parts && count < best_kits))
                 {
@@ -147,7 +147,8 @@ std::string part_counts_text(const PartCounts& counts)
     for (int k = 0; k < kStrutKindCount; ++k)
         if (counts[static_cast<size_t>(k)] > 0)
         {
-            out << (any ? ", " : "") << counts[static_cast<size_t>(k)] << " " << kind_info(static_cast<StrutKind>(k)).name;
+            out << (any ? ", " : "") << counts[static_cast<size_t>(k)] << " "
+                << kind_info(static_cast<StrutKind>(k)).name;
             any = true;
         }
     if (counts[kStrutKindCount] > 0)

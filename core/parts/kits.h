@@ -21,7 +21,10 @@ struct Kit
     //! Struts of each length per colour (blue, yellow, red): a kit has that many of each size.
     std::array<size_t, 3> struts_per_length;
     size_t balls;
-    size_t part_count() const { return 3 * (struts_per_length[0] + struts_per_length[1] + struts_per_length[2]) + balls; }
+    size_t part_count() const
+    {
+        return 3 * (struts_per_length[0] + struts_per_length[1] + struts_per_length[2]) + balls;
+    }
 };
 
 const std::vector<Kit>& standard_kits();

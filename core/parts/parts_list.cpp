@@ -52,8 +52,8 @@ std::string parts_table(const PartsList& parts)
     char line[160];
     std::snprintf(line, sizeof line, "%-12s %-6s %-7s %10s %7s\n", "part", "kind", "colour", "length mm", "count");
     out << line;
-    std::snprintf(line, sizeof line, "%-12s %-6s %-7s %10.2f %7zu\n", kBallPartCode, "ball", "white",
-                  kBallDiameterMm, parts.balls);
+    std::snprintf(line, sizeof line, "%-12s %-6s %-7s %10.2f %7zu\n", kBallPartCode, "ball", "white", kBallDiameterMm,
+                  parts.balls);
     out << line;
     for (int k = 0; k < kStrutKindCount; ++k)
     {

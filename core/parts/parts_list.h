@@ -17,8 +17,8 @@ struct PartsList
     size_t balls = 0;
     std::array<size_t, kStrutKindCount> struts{}; //!< count per StrutKind (B0..R2)
     size_t strut_count = 0;
-    double total_length_b0 = 0;  //!< sum of strut lengths, b0 = 1
-    double total_length_mm = 0;  //!< the same in millimetres, node centre to node centre
+    double total_length_b0 = 0; //!< sum of strut lengths, b0 = 1
+    double total_length_mm = 0; //!< the same in millimetres, node centre to node centre
     //! Extent of the built model (ball centres plus one ball diameter), x/y/z in cm.
     std::array<double, 3> size_cm{};
 };

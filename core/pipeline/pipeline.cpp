@@ -87,13 +87,13 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
         throw InvalidInputError("internal error: Z0 failed validation: " + check.message());
 
     const auto [lo, hi] = bounding_box(surface);
-    r.resolution = options.b1 > 0.0 ? static_cast<int>(std::lround((hi - lo).maxCoeff() / z0.grid.cell))
-                                    : z0_options.resolution;
+    r.resolution =
+        options.b1 > 0.0 ? static_cast<int>(std::lround((hi - lo).maxCoeff() / z0.grid.cell)) : z0_options.resolution;
     // The automatic choice already searched for the genus and says what it found.
     if (options.advise && !r.automatic && z0.topology.genus != surface_genus)
-        r.advice = genus_advice(surface, surface_genus, is_inside, r.resolution, z0.topology.genus,
-                                options.advisor_seconds)
-                       .message;
+        r.advice =
+            genus_advice(surface, surface_genus, is_inside, r.resolution, z0.topology.genus, options.advisor_seconds)
+                .message;
     if (callbacks.initial)
         callbacks.initial(r.initial.model);
 

@@ -57,11 +57,11 @@ struct PipelineCallbacks
 struct PipelineResult
 {
     long long surface_genus = 0;
-    int resolution = 0;           //!< cells along the longest side actually used
-    InitialModel initial;         //!< Z0 and its report
-    std::string advice;           //!< the resolution hint when Z0 missed the surface's genus
+    int resolution = 0;                      //!< cells along the longest side actually used
+    InitialModel initial;                    //!< Z0 and its report
+    std::string advice;                      //!< the resolution hint when Z0 missed the surface's genus
     std::optional<AutoResolution> automatic; //!< how the resolution was chosen, when automatic
-    std::optional<AnnealResult> anneal; //!< absent with initial_only
+    std::optional<AnnealResult> anneal;      //!< absent with initial_only
     //! The model to write: the best annealed model when the run was cancelled, the final one
     //! otherwise (Z0 with initial_only). Carries the transform and stats_json.
     ZomeModel model;

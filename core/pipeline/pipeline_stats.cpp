@@ -12,10 +12,10 @@ namespace {
 
 nlohmann::json terms_json(const EnergyTerms& t)
 {
-    return {{"total", t.total},         {"distance", t.distance}, {"orientation", t.orientation},
-            {"tangential", t.tangential}, {"normal", t.normal},   {"fairing", t.fairing},
-            {"complexity", t.complexity}, {"surface", t.surface}, {"fold_overs", t.sums.fold_overs}, {"nodes", t.sums.nodes}, {"struts", t.sums.struts},
-            {"faces", t.sums.faces}};
+    return {{"total", t.total},           {"distance", t.distance},  {"orientation", t.orientation},
+            {"tangential", t.tangential}, {"normal", t.normal},      {"fairing", t.fairing},
+            {"complexity", t.complexity}, {"surface", t.surface},    {"fold_overs", t.sums.fold_overs},
+            {"nodes", t.sums.nodes},      {"struts", t.sums.struts}, {"faces", t.sums.faces}};
 }
 
 nlohmann::json clearance_json(const ClearanceReport& c)
@@ -32,7 +32,8 @@ nlohmann::json clearance_json(const ClearanceReport& c)
 nlohmann::json struts_by_kind(const ZomeModel& m)
 {
     std::map<std::string, size_t> counts;
-    for (int k = 0; k < kStrutKindCount; ++k) counts[std::string(kind_info(static_cast<StrutKind>(k)).name)] = 0;
+    for (int k = 0; k < kStrutKindCount; ++k)
+        counts[std::string(kind_info(static_cast<StrutKind>(k)).name)] = 0;
     for (const auto& s : m.struts)
     {
         if (s[0] >= m.nodes.size() || s[1] >= m.nodes.size())
@@ -42,7 +43,8 @@ nlohmann::json struts_by_kind(const ZomeModel& m)
             ++counts[std::string(kind_info(vector_kind(id)).name)];
     }
     nlohmann::json j = nlohmann::json::object();
-    for (const auto& [k, n] : counts) j[k] = n;
+    for (const auto& [k, n] : counts)
+        j[k] = n;
     return j;
 }
 
@@ -70,9 +72,13 @@ nlohmann::json anneal_json(const AnnealResult& a)
             {"rejections", rejections},
             {"busy_seeds", s.busy_seeds},
             {"dead_seeds", s.dead_seeds},
-            {"lost_races", s.lost_races}, {"redecisions", s.redecisions},
-            {"fold_over_repair", {{"before", s.fold_overs_before_repair}, {"after", s.fold_overs_after_repair},
-                                  {"proposals", s.repair_proposals}, {"commits", s.repair_commits}}},
+            {"lost_races", s.lost_races},
+            {"redecisions", s.redecisions},
+            {"fold_over_repair",
+             {{"before", s.fold_overs_before_repair},
+              {"after", s.fold_overs_after_repair},
+              {"proposals", s.repair_proposals},
+              {"commits", s.repair_commits}}},
             {"garbage_collections", s.garbage_collections},
             {"coverage",
              {{"radius_b0", s.coverage_radius},

@@ -48,8 +48,8 @@ void check_value(const OptionBounds& b, double x)
     const bool in = std::isfinite(x) && x >= b.min && x <= b.max && (!b.integer || x == std::floor(x));
     if (!in)
         throw InvalidInputError(std::string("option '") + b.key + "' (" + b.flag + ") must be " +
-                                (b.integer ? "a whole number " : "a number ") + "from " + number_text(b.min) +
-                                " to " + number_text(b.max) + ", got " + number_text(x));
+                                (b.integer ? "a whole number " : "a number ") + "from " + number_text(b.min) + " to " +
+                                number_text(b.max) + ", got " + number_text(x));
 }
 
 } // namespace
@@ -98,8 +98,8 @@ void RunSettings::check() const
     // 1 cell cannot hold a shape; 0 means automatic.
     if (resolution != kAutoResolution && resolution < kMinResolution)
         throw InvalidInputError("option 'resolution' (--resolution) must be automatic (0) or from " +
-                                std::to_string(kMinResolution) + " to " + std::to_string(kMaxResolution) +
-                                ", got " + std::to_string(resolution));
+                                std::to_string(kMinResolution) + " to " + std::to_string(kMaxResolution) + ", got " +
+                                std::to_string(resolution));
     // A proposal budget replaces the time budget; without one the run needs some time.
     if (proposals == 0 && !(seconds > 0.0))
         throw InvalidInputError("option 'seconds' (--seconds) must be positive unless a proposal budget is given");
@@ -156,11 +156,9 @@ std::string run_settings_json(const RunSettings& s)
     nlohmann::json weights = nlohmann::json::object();
     for (const WeightField& f : kWeights)
         weights[f.name] = s.energy.*f.field;
-    const nlohmann::json j = {{"resolution", s.resolution}, {"seconds", s.seconds},
-                              {"proposals", s.proposals},   {"target_nodes", s.target_nodes},
-                              {"threads", s.threads},       {"seed", s.seed},
-                              {"initial_only", s.initial_only}, {"size_cm", s.size_cm},
-                              {"weights", weights}};
+    const nlohmann::json j = {{"resolution", s.resolution},     {"seconds", s.seconds}, {"proposals", s.proposals},
+                              {"target_nodes", s.target_nodes}, {"threads", s.threads}, {"seed", s.seed},
+                              {"initial_only", s.initial_only}, {"size_cm", s.size_cm}, {"weights", weights}};
     return j.dump();
 }
 

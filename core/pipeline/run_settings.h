@@ -35,7 +35,7 @@ struct RunSettings
     //! > 0: the built longest side in cm (core/build/real_size.h) instead of the resolution; the
     //! front end that holds the mesh turns it into b1 (the CLI's --size-cm, the page's size field).
     double size_cm = 0.0;
-    EnergyOptions energy;      //!< the energy's weights (energy_options.h)
+    EnergyOptions energy; //!< the energy's weights (energy_options.h)
 
     //! Throws InvalidInputError with a one-line message naming the first option out of bounds.
     void check() const;

@@ -24,7 +24,8 @@ Vec3 to_mesh(const ZVec& p, const ModelTransform& t)
 TriangleMesh model_surface(const ZomeModel& model)
 {
     TriangleMesh out;
-    for (const ZVec& p : model.nodes) out.positions.push_back(to_mesh(p, model.transform));
+    for (const ZVec& p : model.nodes)
+        out.positions.push_back(to_mesh(p, model.transform));
     for (const auto& face : model.faces)
     {
         if (face.size() != 3 && face.size() != 4)
@@ -166,7 +167,8 @@ Fidelity measure_fidelity(const ZomeModel& model, const SurfaceProjector& surfac
 nlohmann::json fidelity_json(const Fidelity& f)
 {
     const auto way = [](const OneWay& w) {
-        return nlohmann::json{{"rms_b0", w.rms}, {"max_b0", w.max}, {"rms_mm", w.rms * kMmPerB0}, {"max_mm", w.max * kMmPerB0}};
+        return nlohmann::json{
+            {"rms_b0", w.rms}, {"max_b0", w.max}, {"rms_mm", w.rms * kMmPerB0}, {"max_mm", w.max * kMmPerB0}};
     };
     return {{"model_to_surface", way(f.model_to_surface)},
             {"surface_to_model", way(f.surface_to_model)},
@@ -185,8 +187,8 @@ std::string fidelity_summary(const Fidelity& f)
 {
     return "largest gap " + format("%.0f mm", f.hausdorff * kMmPerB0) + format(" (%.2f b0), ", f.hausdorff) +
            (f.gap_is_missed_surface ? "where the model misses the surface" : "where the model stands off the surface") +
-           (f.where == "middle" ? ", in the middle" : ", at the " + f.where) + "; typical distance " + format("%.1f mm", f.rms_symmetric * kMmPerB0) +
-           format(" (RMS %.3f b0)", f.rms_symmetric);
+           (f.where == "middle" ? ", in the middle" : ", at the " + f.where) + "; typical distance " +
+           format("%.1f mm", f.rms_symmetric * kMmPerB0) + format(" (RMS %.3f b0)", f.rms_symmetric);
 }
 
 } // namespace zomeify

@@ -34,8 +34,8 @@ struct OneWay
 
 struct Fidelity
 {
-    OneWay model_to_surface; //!< points of the model's faces to S
-    OneWay surface_to_model; //!< points of S to the model's faces
+    OneWay model_to_surface;    //!< points of the model's faces to S
+    OneWay surface_to_model;    //!< points of S to the model's faces
     double rms_symmetric = 0.0; //!< sqrt of the mean of both mean squared distances (b0)
     double hausdorff = 0.0;     //!< the larger maximum (b0)
     //! Where the Hausdorff distance is, in the mesh's coordinates, and whether it is a part of S

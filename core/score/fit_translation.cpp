@@ -20,8 +20,7 @@ Vec3 box_centre(const std::vector<Vec3>& points)
 
 } // namespace
 
-ModelTransform fit_translation(const ZomeModel& model, const SurfaceProjector& surface, double scale,
-                               int iterations)
+ModelTransform fit_translation(const ZomeModel& model, const SurfaceProjector& surface, double scale, int iterations)
 {
     if (model.nodes.empty() || surface.mesh().positions.empty())
         throw InvalidInputError("fitting a model onto a surface needs nodes and a surface");
@@ -43,7 +42,8 @@ ModelTransform fit_translation(const ZomeModel& model, const SurfaceProjector& s
         }
         step /= static_cast<double>(nodes.size());
         t += step;
-        if (step.norm() < 1e-9 * scale) break;
+        if (step.norm() < 1e-9 * scale)
+            break;
     }
     ModelTransform transform;
     transform.scale = scale;

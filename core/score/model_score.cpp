@@ -20,21 +20,26 @@ namespace {
 
 ModelScore score_model(const ZomeModel& model, const SurfaceProjector& surface, const ScoreOptions& options)
 {
-    if (model.faces.empty()) throw InvalidInputError("scoring needs the model's faces");
+    if (model.faces.empty())
+        throw InvalidInputError("scoring needs the model's faces");
     const ZomeMesh mesh = from_model(model);
     const ValidationReport report = validate(mesh);
-    if (!report.ok()) throw InvalidInputError("the model is not a valid closed Zome surface: " + report.message());
+    if (!report.ok())
+        throw InvalidInputError("the model is not a valid closed Zome surface: " + report.message());
 
     ModelScore score;
     score.nodes = model.nodes.size();
     score.struts = model.struts.size();
     score.faces = model.faces.size();
     score.genus = report.genus;
-    for (const auto& f : model.faces) (f.size() == 3 ? score.triangles : score.quads) += 1;
-    for (Edge e : edges(mesh)) score.struts_by_kind[static_cast<size_t>(mesh.kind(e))] += 1;
+    for (const auto& f : model.faces)
+        (f.size() == 3 ? score.triangles : score.quads) += 1;
+    for (Edge e : edges(mesh))
+        score.struts_by_kind[static_cast<size_t>(mesh.kind(e))] += 1;
 
     EnergyOptions energy = options.energy;
-    if (energy.target_nodes == 0) energy.target_nodes = model.nodes.size();
+    if (energy.target_nodes == 0)
+        energy.target_nodes = model.nodes.size();
     const SurfaceContext context(surface, model.transform);
     score.energy = evaluate_energy(mesh, context, energy);
     score.clearance = clearance_report(mesh);
@@ -65,10 +70,11 @@ std::string score_json(const ModelScore& score)
     nlohmann::ordered_json clashes;
     for (int k = 1; k < kClashKinds; ++k)
         clashes[clash_name(static_cast<ClashKind>(k))] = c.clashes[static_cast<size_t>(k)];
-    j["clearance"] = {{"clashes", c.total()},
-                      {"by_kind", clashes},
-                      {"smallest_b0", {{"ball_ball", c.ball_ball}, {"ball_strut", c.ball_strut}, {"strut_strut", c.strut_strut}}},
-                      {"summary", clearance_summary(c)}};
+    j["clearance"] = {
+        {"clashes", c.total()},
+        {"by_kind", clashes},
+        {"smallest_b0", {{"ball_ball", c.ball_ball}, {"ball_strut", c.ball_strut}, {"strut_strut", c.strut_strut}}},
+        {"summary", clearance_summary(c)}};
     j["fidelity"] = fidelity_json(score.fidelity);
     return j.dump(2);
 }

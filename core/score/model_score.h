@@ -22,15 +22,15 @@ struct ModelScore
     size_t nodes = 0, struts = 0, faces = 0, triangles = 0, quads = 0;
     std::array<size_t, kStrutKindCount> struts_by_kind{};
     int genus = 0;
-    EnergyTerms energy;          //!< with target_nodes = the model's own node count unless given
-    size_t fold_overs = 0;       //!< faces whose normal points against S's normal at π(barycentre)
-    Fidelity fidelity;           //!< distances both ways, in b0 (fidelity.h)
-    ClearanceReport clearance;   //!< clashes between parts and the smallest clearances
+    EnergyTerms energy;        //!< with target_nodes = the model's own node count unless given
+    size_t fold_overs = 0;     //!< faces whose normal points against S's normal at π(barycentre)
+    Fidelity fidelity;         //!< distances both ways, in b0 (fidelity.h)
+    ClearanceReport clearance; //!< clashes between parts and the smallest clearances
 };
 
 struct ScoreOptions
 {
-    EnergyOptions energy;        //!< energy.target_nodes = 0 → the model's node count
+    EnergyOptions energy; //!< energy.target_nodes = 0 → the model's node count
     FidelityOptions fidelity;
 };
 

@@ -5,11 +5,10 @@
 #include <cstdint>
 #include <cstring>
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
 //! The `n` (1, 2, 4 or 8) bytes at `p` as an unsigned integer in the given byte order.
-inline uint64_t load_uint(const uint8_t *p, int n, bool big_endian)
+inline uint64_t load_uint(const uint8_t* p, int n, bool big_endian)
 {
     uint64_t v = 0;
     for (int i = 0; i < n; ++i)
@@ -17,10 +16,7 @@ inline uint64_t load_uint(const uint8_t *p, int n, bool big_endian)
     return v;
 }
 
-inline uint32_t load_u32_le(const uint8_t *p)
-{
-    return static_cast<uint32_t>(load_uint(p, 4, false));
-}
+inline uint32_t load_u32_le(const uint8_t* p) { return static_cast<uint32_t>(load_uint(p, 4, false)); }
 
 //! The bits of `u` as a float (memcpy rather than std::bit_cast, which not every toolchain we build with has).
 inline float float_from_bits(uint32_t u)
@@ -30,12 +26,12 @@ inline float float_from_bits(uint32_t u)
     return f;
 }
 
-inline float load_f32(const uint8_t *p, bool big_endian)
+inline float load_f32(const uint8_t* p, bool big_endian)
 {
     return float_from_bits(static_cast<uint32_t>(load_uint(p, 4, big_endian)));
 }
 
-inline double load_f64(const uint8_t *p, bool big_endian)
+inline double load_f64(const uint8_t* p, bool big_endian)
 {
     const uint64_t u = load_uint(p, 8, big_endian);
     double d;

@@ -6,15 +6,13 @@
 
 #include <Eigen/Geometry>
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 // Solid angle of triangle abc seen from the origin (Van Oosterom and Strackee), signed by the
 // triangle's orientation.
-double solid_angle(const Vec3 &a, const Vec3 &b, const Vec3 &c)
+double solid_angle(const Vec3& a, const Vec3& b, const Vec3& c)
 {
     const double la = a.norm(), lb = b.norm(), lc = c.norm();
     const double numerator = a.dot(b.cross(c));
@@ -24,9 +22,9 @@ double solid_angle(const Vec3 &a, const Vec3 &b, const Vec3 &c)
 
 } // namespace
 
-std::vector<uint32_t> nesting_depths(const std::vector<Vec3> &positions,
-                                     const std::vector<std::array<uint32_t, 3>> &triangles,
-                                     const std::vector<uint32_t> &component, const std::vector<uint8_t> &closed)
+std::vector<uint32_t> nesting_depths(const std::vector<Vec3>& positions,
+                                     const std::vector<std::array<uint32_t, 3>>& triangles,
+                                     const std::vector<uint32_t>& component, const std::vector<uint8_t>& closed)
 {
     const size_t nc = closed.size();
     std::vector<uint32_t> depth(nc, 0);
@@ -64,7 +62,7 @@ std::vector<uint32_t> nesting_depths(const std::vector<Vec3> &positions,
     {
         if (!closed[c])
             continue;
-        const Vec3 &p = positions[probe[c]];
+        const Vec3& p = positions[probe[c]];
         for (size_t d = 0; d < nc; ++d)
         {
             if (d == c || !closed[d] || (p.array() < lo[d].array()).any() || (p.array() > hi[d].array()).any())

@@ -8,8 +8,7 @@
 
 #include "core/geom/triangle_mesh.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! Flat vertex positions and index polygons (any size, including faces with fewer than 3 vertices,
 //! which the readers keep so that the diagnosis can count them).

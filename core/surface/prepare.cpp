@@ -12,20 +12,18 @@
 #include "core/surface/triangulate.h"
 #include "core/surface/weld.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 using Triangle = std::array<uint32_t, 3>;
 
-std::string plural(size_t n, const std::string &one, const std::string &many)
+std::string plural(size_t n, const std::string& one, const std::string& many)
 {
     return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-std::string pair_text(const std::array<uint32_t, 2> &e)
+std::string pair_text(const std::array<uint32_t, 2>& e)
 {
     return "between vertices " + std::to_string(e[0]) + " and " + std::to_string(e[1]);
 }
@@ -33,7 +31,7 @@ std::string pair_text(const std::array<uint32_t, 2> &e)
 // The polygon mapped through the weld, with cyclically repeated neighbours removed (an edge the
 // weld collapsed). Empty if what remains is not a simple polygon (fewer than 3 corners, or a
 // vertex used twice).
-std::vector<uint32_t> welded_polygon(const std::vector<uint32_t> &polygon, const std::vector<uint32_t> &target)
+std::vector<uint32_t> welded_polygon(const std::vector<uint32_t>& polygon, const std::vector<uint32_t>& target)
 {
     std::vector<uint32_t> out;
     out.reserve(polygon.size());
@@ -52,13 +50,13 @@ std::vector<uint32_t> welded_polygon(const std::vector<uint32_t> &polygon, const
 }
 
 // The same triangle up to rotation: smallest index first, orientation kept.
-Triangle canonical(const Triangle &t)
+Triangle canonical(const Triangle& t)
 {
     const int m = t[0] < t[1] ? (t[0] < t[2] ? 0 : 2) : (t[1] < t[2] ? 1 : 2);
     return {t[m], t[(m + 1) % 3], t[(m + 2) % 3]};
 }
 
-void describe_repairs(SurfaceReport &r)
+void describe_repairs(SurfaceReport& r)
 {
     if (r.welded_vertices)
         r.repairs.push_back("welded " + plural(r.welded_vertices, "duplicate vertex", "duplicate vertices"));
@@ -83,7 +81,7 @@ void describe_repairs(SurfaceReport &r)
                             (r.cavities ? " (cavities inward)" : ""));
 }
 
-void describe_problems(SurfaceReport &r, const TopologyInfo &t, const std::vector<uint32_t> &original)
+void describe_problems(SurfaceReport& r, const TopologyInfo& t, const std::vector<uint32_t>& original)
 {
     if (r.faces == 0)
     {
@@ -116,10 +114,10 @@ void describe_problems(SurfaceReport &r, const TopologyInfo &t, const std::vecto
                              plural(t.holes, "hole", "holes") + " first");
 }
 
-PreparedSurface run(const PolygonSoup &soup, const PrepareOptions &options)
+PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
 {
     PreparedSurface out;
-    SurfaceReport &r = out.report;
+    SurfaceReport& r = out.report;
     const size_t nv = soup.positions.size();
     r.input_vertices = nv;
     r.input_faces = soup.polygons.size();
@@ -136,7 +134,7 @@ PreparedSurface run(const PolygonSoup &soup, const PrepareOptions &options)
     std::vector<bool> referenced(nv, false);
     for (size_t f = 0; f < soup.polygons.size(); ++f)
     {
-        const auto &polygon = soup.polygons[f];
+        const auto& polygon = soup.polygons[f];
         if (polygon.size() < 3)
         {
             ++r.dropped_small_faces;
@@ -205,8 +203,8 @@ PreparedSurface run(const PolygonSoup &soup, const PrepareOptions &options)
         size_t kept = before;
         for (size_t t = before; t < triangles.size(); ++t)
         {
-            const Triangle &tri = triangles[t];
-            const Vec3 &p = soup.positions[tri[0]];
+            const Triangle& tri = triangles[t];
+            const Vec3& p = soup.positions[tri[0]];
             const double twice_area = (soup.positions[tri[1]] - p).cross(soup.positions[tri[2]] - p).norm();
             if (twice_area <= min_double_area)
                 ++r.dropped_degenerate_faces;
@@ -237,7 +235,7 @@ PreparedSurface run(const PolygonSoup &soup, const PrepareOptions &options)
     // Compact: keep used vertices in their input order.
     constexpr uint32_t unused = std::numeric_limits<uint32_t>::max();
     std::vector<uint32_t> new_index(nv, unused);
-    for (const Triangle &t : triangles)
+    for (const Triangle& t : triangles)
         for (const uint32_t i : t)
             new_index[i] = 0;
     std::vector<uint32_t> original;
@@ -248,8 +246,8 @@ PreparedSurface run(const PolygonSoup &soup, const PrepareOptions &options)
             original.push_back(static_cast<uint32_t>(i));
             out.mesh.positions.push_back(soup.positions[i]);
         }
-    for (Triangle &t : triangles)
-        for (uint32_t &i : t)
+    for (Triangle& t : triangles)
+        for (uint32_t& i : t)
             i = new_index[i];
     for (size_t i = 0; i < nv; ++i)
         r.unreferenced_vertices += !non_finite[i] && target[i] == i && new_index[i] == unused;
@@ -286,17 +284,14 @@ PreparedSurface run(const PolygonSoup &soup, const PrepareOptions &options)
 std::string SurfaceReport::problem_summary() const
 {
     std::string s;
-    for (const std::string &p : problems)
+    for (const std::string& p : problems)
         s += (s.empty() ? "" : "; ") + p;
     return s;
 }
 
-SurfaceReport diagnose(const PolygonSoup &soup, const PrepareOptions &options)
-{
-    return run(soup, options).report;
-}
+SurfaceReport diagnose(const PolygonSoup& soup, const PrepareOptions& options) { return run(soup, options).report; }
 
-PreparedSurface prepare_surface(const PolygonSoup &soup, const PrepareOptions &options)
+PreparedSurface prepare_surface(const PolygonSoup& soup, const PrepareOptions& options)
 {
     PreparedSurface prepared = run(soup, options);
     if (!prepared.report.ok())
@@ -304,9 +299,6 @@ PreparedSurface prepare_surface(const PolygonSoup &soup, const PrepareOptions &o
     return prepared;
 }
 
-TriangleMesh load_surface(const std::string &path)
-{
-    return prepare_surface(read_mesh_file(path)).mesh;
-}
+TriangleMesh load_surface(const std::string& path) { return prepare_surface(read_mesh_file(path)).mesh; }
 
 } // namespace zomeify

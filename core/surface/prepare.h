@@ -12,8 +12,7 @@
 #include "core/geom/triangle_mesh.h"
 #include "core/surface/polygon_soup.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! What the diagnosis found and what the repair did. Counts refer to the soup as given (input_*)
 //! or to the repaired triangle mesh (everything else). Vertex numbers in messages are 0-based
@@ -77,13 +76,13 @@ struct PreparedSurface
 };
 
 //! Runs the whole repair without throwing for geometry problems; the report says what is wrong.
-SurfaceReport diagnose(const PolygonSoup &soup, const PrepareOptions &options = {});
+SurfaceReport diagnose(const PolygonSoup& soup, const PrepareOptions& options = {});
 
 //! Repairs what is safe and returns the closed, consistently outward-oriented triangle mesh.
 //! Throws InvalidInputError with report.problem_summary() (counts and a hint) otherwise.
-PreparedSurface prepare_surface(const PolygonSoup &soup, const PrepareOptions &options = {});
+PreparedSurface prepare_surface(const PolygonSoup& soup, const PrepareOptions& options = {});
 
 //! read_mesh_file + prepare_surface.
-TriangleMesh load_surface(const std::string &path);
+TriangleMesh load_surface(const std::string& path);
 
 } // namespace zomeify

@@ -12,11 +12,9 @@
 #include "core/surface/readers.h"
 #include "core/surface/tiny_gltf_config.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-namespace
-{
+namespace {
 
 using Mat4 = Eigen::Matrix4d;
 
@@ -24,8 +22,7 @@ using Mat4 = Eigen::Matrix4d;
 constexpr size_t max_node_visits = 1'000'000;
 constexpr size_t max_output_vertices = 100'000'000;
 
-bool skip_image(tinygltf::Image *, const int, std::string *, std::string *, int, int, const unsigned char *, int,
-                void *)
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int, const unsigned char*, int, void*)
 {
     return true;
 }
@@ -37,34 +34,31 @@ struct NoFiles
     std::string missing;
 };
 
-bool no_file_exists(const std::string &name, void *user_data)
+bool no_file_exists(const std::string& name, void* user_data)
 {
-    auto *state = static_cast<NoFiles *>(user_data);
+    auto* state = static_cast<NoFiles*>(user_data);
     if (state->missing.empty())
         state->missing = name;
     return false;
 }
 
-std::string same_path(const std::string &path, void *)
-{
-    return path;
-}
+std::string same_path(const std::string& path, void*) { return path; }
 
-bool no_read(std::vector<unsigned char> *, std::string *err, const std::string &, void *)
+bool no_read(std::vector<unsigned char>*, std::string* err, const std::string&, void*)
 {
     if (err)
         *err = "no file access";
     return false;
 }
 
-bool no_write(std::string *err, const std::string &, const std::vector<unsigned char> &, void *)
+bool no_write(std::string* err, const std::string&, const std::vector<unsigned char>&, void*)
 {
     if (err)
         *err = "no file access";
     return false;
 }
 
-std::string first_line(const std::string &text)
+std::string first_line(const std::string& text)
 {
     std::string s = text.substr(0, text.find('\n'));
     return s.empty() ? "unknown error" : s;
@@ -88,7 +82,7 @@ int component_size(int component_type)
     }
 }
 
-double load_component(const unsigned char *p, int component_type, bool normalized)
+double load_component(const unsigned char* p, int component_type, bool normalized)
 {
     // glTF data is little-endian; assemble bytes so the host's order does not matter.
     uint32_t u = 0;
@@ -119,11 +113,11 @@ double load_component(const unsigned char *p, int component_type, bool normalize
 }
 
 // The values of accessor `index` (count x components), after checking every byte it would touch.
-std::vector<double> read_accessor(const tinygltf::Model &model, int index, int components, const std::string &what)
+std::vector<double> read_accessor(const tinygltf::Model& model, int index, int components, const std::string& what)
 {
     if (index < 0 || static_cast<size_t>(index) >= model.accessors.size())
         throw InvalidInputError(what + ": accessor " + std::to_string(index) + " does not exist");
-    const tinygltf::Accessor &a = model.accessors[static_cast<size_t>(index)];
+    const tinygltf::Accessor& a = model.accessors[static_cast<size_t>(index)];
     if (a.sparse.isSparse)
         throw InvalidInputError(what + ": sparse accessors are not supported");
     const int csize = component_size(a.componentType);
@@ -134,10 +128,10 @@ std::vector<double> read_accessor(const tinygltf::Model &model, int index, int c
         return {};
     if (a.bufferView < 0 || static_cast<size_t>(a.bufferView) >= model.bufferViews.size())
         throw InvalidInputError(what + ": accessor " + std::to_string(index) + " has no buffer view");
-    const tinygltf::BufferView &view = model.bufferViews[static_cast<size_t>(a.bufferView)];
+    const tinygltf::BufferView& view = model.bufferViews[static_cast<size_t>(a.bufferView)];
     if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
         throw InvalidInputError(what + ": buffer view " + std::to_string(a.bufferView) + " has no buffer");
-    const std::vector<unsigned char> &data = model.buffers[static_cast<size_t>(view.buffer)].data;
+    const std::vector<unsigned char>& data = model.buffers[static_cast<size_t>(view.buffer)].data;
     const size_t element = static_cast<size_t>(csize) * static_cast<size_t>(components);
     const size_t stride = view.byteStride ? view.byteStride : element;
     if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset || stride < element ||
@@ -145,7 +139,7 @@ std::vector<double> read_accessor(const tinygltf::Model &model, int index, int c
         a.count - 1 > (view.byteLength - a.byteOffset - element) / stride)
         throw InvalidInputError(what + ": accessor " + std::to_string(index) + " reaches outside its buffer");
     std::vector<double> values(a.count * static_cast<size_t>(components));
-    const unsigned char *base = data.data() + view.byteOffset + a.byteOffset;
+    const unsigned char* base = data.data() + view.byteOffset + a.byteOffset;
     for (size_t i = 0; i < a.count; ++i)
         for (int c = 0; c < components; ++c)
             values[i * static_cast<size_t>(components) + static_cast<size_t>(c)] =
@@ -153,7 +147,7 @@ std::vector<double> read_accessor(const tinygltf::Model &model, int index, int c
     return values;
 }
 
-Mat4 local_transform(const tinygltf::Node &node)
+Mat4 local_transform(const tinygltf::Node& node)
 {
     Mat4 m = Mat4::Identity();
     if (node.matrix.size() == 16)
@@ -179,9 +173,9 @@ Mat4 local_transform(const tinygltf::Node &node)
 class SceneReader
 {
 public:
-    explicit SceneReader(const tinygltf::Model &model) : model_(model), on_path_(model.nodes.size(), 0) {}
+    explicit SceneReader(const tinygltf::Model& model) : model_(model), on_path_(model.nodes.size(), 0) {}
 
-    void add_node(int index, const Mat4 &parent)
+    void add_node(int index, const Mat4& parent)
     {
         if (index < 0 || static_cast<size_t>(index) >= model_.nodes.size())
             throw InvalidInputError("node " + std::to_string(index) + " does not exist");
@@ -189,7 +183,7 @@ public:
             throw InvalidInputError("node " + std::to_string(index) + " is its own ancestor");
         if (++visits_ > max_node_visits)
             throw InvalidInputError("the scene instances more than " + std::to_string(max_node_visits) + " nodes");
-        const tinygltf::Node &node = model_.nodes[static_cast<size_t>(index)];
+        const tinygltf::Node& node = model_.nodes[static_cast<size_t>(index)];
         const Mat4 m = parent * local_transform(node);
         if (!m.allFinite())
             throw InvalidInputError("node " + std::to_string(index) + " has a NaN or infinite transform");
@@ -201,11 +195,11 @@ public:
         on_path_[static_cast<size_t>(index)] = 0;
     }
 
-    void add_mesh(int index, const Mat4 &m)
+    void add_mesh(int index, const Mat4& m)
     {
         if (static_cast<size_t>(index) >= model_.meshes.size())
             throw InvalidInputError("mesh " + std::to_string(index) + " does not exist");
-        const auto &primitives = model_.meshes[static_cast<size_t>(index)].primitives;
+        const auto& primitives = model_.meshes[static_cast<size_t>(index)].primitives;
         for (size_t p = 0; p < primitives.size(); ++p)
             add_primitive(primitives[p], m, "mesh " + std::to_string(index) + " primitive " + std::to_string(p));
     }
@@ -213,7 +207,7 @@ public:
     PolygonSoup take() { return std::move(soup_); }
 
 private:
-    void add_primitive(const tinygltf::Primitive &prim, const Mat4 &m, const std::string &what)
+    void add_primitive(const tinygltf::Primitive& prim, const Mat4& m, const std::string& what)
     {
         const int mode = prim.mode < 0 ? TINYGLTF_MODE_TRIANGLES : prim.mode;
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
@@ -250,8 +244,7 @@ private:
         }
         // A mirroring transform turns counter-clockwise into clockwise.
         const bool mirror = m.topLeftCorner<3, 3>().determinant() < 0;
-        const auto emit = [&](size_t a, size_t b, size_t c)
-        {
+        const auto emit = [&](size_t a, size_t b, size_t c) {
             const uint32_t ia = first + static_cast<uint32_t>(order[a]);
             const uint32_t ib = first + static_cast<uint32_t>(order[b]);
             const uint32_t ic = first + static_cast<uint32_t>(order[c]);
@@ -269,7 +262,7 @@ private:
                 emit(0, i, i + 1);
     }
 
-    const tinygltf::Model &model_;
+    const tinygltf::Model& model_;
     std::vector<uint8_t> on_path_;
     size_t visits_ = 0;
     PolygonSoup soup_;
@@ -277,7 +270,7 @@ private:
 
 } // namespace
 
-PolygonSoup read_gltf(std::span<const uint8_t> bytes, bool binary, const std::string &base_dir)
+PolygonSoup read_gltf(std::span<const uint8_t> bytes, bool binary, const std::string& base_dir)
 {
     if (bytes.empty())
         throw InvalidInputError("file is empty");
@@ -295,10 +288,10 @@ PolygonSoup read_gltf(std::span<const uint8_t> bytes, bool binary, const std::st
     {
         const auto size = static_cast<unsigned int>(bytes.size());
         ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), size, base_dir)
-                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char *>(bytes.data()),
-                                                 size, base_dir);
+                    : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()), size,
+                                                 base_dir);
     }
-    catch (const std::exception &e)
+    catch (const std::exception& e)
     {
         throw InvalidInputError(std::string("invalid glTF: ") + e.what());
     }
@@ -321,7 +314,7 @@ PolygonSoup read_gltf(std::span<const uint8_t> bytes, bool binary, const std::st
     {
         // No scene: every node that is nobody's child is a root.
         std::vector<uint8_t> is_child(model.nodes.size(), 0);
-        for (const tinygltf::Node &n : model.nodes)
+        for (const tinygltf::Node& n : model.nodes)
             for (const int c : n.children)
                 if (c >= 0 && static_cast<size_t>(c) < is_child.size())
                     is_child[static_cast<size_t>(c)] = 1;

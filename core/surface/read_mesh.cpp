@@ -7,11 +7,9 @@
 #include "core/base/errors.h"
 #include "core/surface/readers.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 // Files larger than this are refused before reading (the page could not hold them either).
 constexpr unsigned long long max_mesh_file_bytes = 1ull << 30;
@@ -64,7 +62,7 @@ std::string base_name(std::string_view path)
     return std::string(slash == std::string_view::npos ? path : path.substr(slash + 1));
 }
 
-PolygonSoup read_format(std::span<const uint8_t> bytes, std::string_view file_name, const std::string &base_dir)
+PolygonSoup read_format(std::span<const uint8_t> bytes, std::string_view file_name, const std::string& base_dir)
 {
     switch (format_of(file_name))
     {
@@ -88,13 +86,13 @@ PolygonSoup read_format(std::span<const uint8_t> bytes, std::string_view file_na
 }
 
 // Prefixes reader messages with the file's name, so a message on its own says which input is bad.
-PolygonSoup read_named(std::span<const uint8_t> bytes, std::string_view file_name, const std::string &base_dir)
+PolygonSoup read_named(std::span<const uint8_t> bytes, std::string_view file_name, const std::string& base_dir)
 {
     try
     {
         return read_format(bytes, file_name, base_dir);
     }
-    catch (const InvalidInputError &e)
+    catch (const InvalidInputError& e)
     {
         throw InvalidInputError(base_name(file_name) + ": " + e.what());
     }
@@ -102,12 +100,9 @@ PolygonSoup read_named(std::span<const uint8_t> bytes, std::string_view file_nam
 
 } // namespace
 
-bool is_mesh_file_name(std::string_view file_name)
-{
-    return format_of(file_name) != Format::unknown;
-}
+bool is_mesh_file_name(std::string_view file_name) { return format_of(file_name) != Format::unknown; }
 
-PolygonSoup read_mesh_file(const std::string &path)
+PolygonSoup read_mesh_file(const std::string& path)
 {
     if (!is_mesh_file_name(path))
         return read_named({}, path, {}); // throws the unknown-format message
@@ -122,7 +117,7 @@ PolygonSoup read_mesh_file(const std::string &path)
         throw InvalidInputError(base_name(path) + ": file is larger than 1 GiB");
     in.seekg(0, std::ios::beg);
     std::vector<uint8_t> bytes(static_cast<size_t>(size));
-    if (size > 0 && !in.read(reinterpret_cast<char *>(bytes.data()), size))
+    if (size > 0 && !in.read(reinterpret_cast<char*>(bytes.data()), size))
         throw IoError("cannot read '" + path + "'");
     const size_t slash = path.find_last_of("/\\");
     const std::string base_dir = slash == std::string::npos ? std::string(".") : path.substr(0, slash);

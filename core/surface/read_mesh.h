@@ -13,11 +13,10 @@
 
 #include "core/surface/polygon_soup.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! Reads the file at `path`. A .gltf may refer to external buffers next to it.
-PolygonSoup read_mesh_file(const std::string &path);
+PolygonSoup read_mesh_file(const std::string& path);
 
 //! Reads a file already in memory (the page's dropped file). `file_name` selects the format and
 //! names the input in messages. A .gltf read this way can only use embedded (data:) buffers.

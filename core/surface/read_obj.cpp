@@ -8,13 +8,11 @@
 #include "core/surface/readers.h"
 #include "core/surface/text_scan.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-namespace
-{
+namespace {
 
-Vec3 parse_vertex(TokenSplitter &tokens, size_t line)
+Vec3 parse_vertex(TokenSplitter& tokens, size_t line)
 {
     Vec3 p;
     for (int axis = 0; axis < 3; ++axis)

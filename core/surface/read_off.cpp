@@ -7,14 +7,12 @@
 #include "core/surface/readers.h"
 #include "core/surface/text_scan.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-namespace
-{
+namespace {
 
 // The next line that has something besides blanks and a comment, with the comment cut off.
-bool next_content_line(LineScanner &lines, std::string_view &line)
+bool next_content_line(LineScanner& lines, std::string_view& line)
 {
     while (lines.next(line))
     {
@@ -28,7 +26,7 @@ bool next_content_line(LineScanner &lines, std::string_view &line)
     return false;
 }
 
-long long parse_count(TokenSplitter &tokens, size_t line, const char *what)
+long long parse_count(TokenSplitter& tokens, size_t line, const char* what)
 {
     std::string_view token;
     long long n = 0;

@@ -9,11 +9,9 @@
 #include "core/surface/readers.h"
 #include "core/surface/text_scan.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-namespace
-{
+namespace {
 
 enum class Kind
 {
@@ -57,7 +55,7 @@ struct Header
     size_t body_offset = 0;
 };
 
-bool parse_type(std::string_view name, Type &type)
+bool parse_type(std::string_view name, Type& type)
 {
     struct Named
     {
@@ -72,7 +70,7 @@ bool parse_type(std::string_view name, Type &type)
         {"float", {Kind::floating, 4}},      {"float32", {Kind::floating, 4}},    {"double", {Kind::floating, 8}},
         {"float64", {Kind::floating, 8}},
     };
-    for (const Named &n : table)
+    for (const Named& n : table)
         if (n.name == name)
         {
             type = n.type;
@@ -84,7 +82,7 @@ bool parse_type(std::string_view name, Type &type)
 // Finds the end of the header ("end_header" line) and parses everything before it.
 Header parse_header(std::span<const uint8_t> bytes)
 {
-    const std::string_view text(reinterpret_cast<const char *>(bytes.data()), bytes.size());
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()), bytes.size());
     if (text.substr(0, 3) != "ply" || text.size() < 4 || (text[3] != '\n' && text[3] != '\r'))
         throw InvalidInputError("not a PLY file (no 'ply' magic line)");
     size_t end = text.find("end_header");
@@ -168,7 +166,7 @@ class BodyReader
 public:
     BodyReader(std::span<const uint8_t> body, Encoding encoding) : body_(body), encoding_(encoding), lines_(body) {}
 
-    double value(const Type &type) { return encoding_ == Encoding::ascii ? ascii_value() : binary_value(type); }
+    double value(const Type& type) { return encoding_ == Encoding::ascii ? ascii_value() : binary_value(type); }
 
     bool is_ascii() const { return encoding_ == Encoding::ascii; }
     size_t remaining_bytes() const { return is_ascii() ? body_.size() : body_.size() - pos_; }
@@ -176,11 +174,11 @@ public:
     std::string where() const { return is_ascii() ? at_line(lines_.line_number()) : ""; }
 
 private:
-    double binary_value(const Type &type)
+    double binary_value(const Type& type)
     {
         if (body_.size() - pos_ < static_cast<size_t>(type.size))
             throw InvalidInputError("file ends inside the data");
-        const uint8_t *p = body_.data() + pos_;
+        const uint8_t* p = body_.data() + pos_;
         pos_ += static_cast<size_t>(type.size);
         const bool big = encoding_ == Encoding::big_endian;
         if (type.kind == Kind::floating)
@@ -216,10 +214,10 @@ private:
 };
 
 // The smallest number of bytes one instance of `e` can take, for the size check.
-unsigned long long min_element_bytes(const Element &e, Encoding encoding)
+unsigned long long min_element_bytes(const Element& e, Encoding encoding)
 {
     unsigned long long bytes = 0;
-    for (const Property &p : e.properties)
+    for (const Property& p : e.properties)
         // An ASCII value is at least one character and a separator.
         bytes += encoding == Encoding::ascii
                      ? 2
@@ -234,7 +232,7 @@ std::string number_text(double v)
     return std::to_string(v);
 }
 
-int find_property(const Element &e, std::string_view name)
+int find_property(const Element& e, std::string_view name)
 {
     for (size_t i = 0; i < e.properties.size(); ++i)
         if (e.properties[i].name == name)
@@ -253,9 +251,9 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
 
     // Every element's claimed count against the body's size, before any allocation.
     unsigned long long budget = body.size() + 1; // +1: the last ASCII value needs no separator
-    const Element *vertex = nullptr;
-    const Element *face = nullptr;
-    for (const Element &e : header.elements)
+    const Element* vertex = nullptr;
+    const Element* face = nullptr;
+    for (const Element& e : header.elements)
     {
         const unsigned long long per = min_element_bytes(e, header.encoding);
         if (e.count > 0 && per == 0)
@@ -272,7 +270,7 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
     }
     if (!vertex)
         throw InvalidInputError("no 'vertex' element");
-    static const char *const axis_names[3] = {"x", "y", "z"};
+    static const char* const axis_names[3] = {"x", "y", "z"};
     int axis_property[3];
     for (int a = 0; a < 3; ++a)
     {
@@ -296,7 +294,7 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
     soup.positions.reserve(static_cast<size_t>(vertex->count));
     soup.polygons.reserve(static_cast<size_t>(face->count));
     BodyReader reader(body, header.encoding);
-    for (const Element &e : header.elements)
+    for (const Element& e : header.elements)
     {
         const bool is_vertex = &e == vertex;
         const bool is_face = &e == face;
@@ -306,7 +304,7 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
             std::vector<uint32_t> polygon;
             for (size_t k = 0; k < e.properties.size(); ++k)
             {
-                const Property &prop = e.properties[k];
+                const Property& prop = e.properties[k];
                 if (!prop.is_list)
                 {
                     const double v = reader.value(prop.type);
@@ -326,8 +324,7 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes)
                 const double limit =
                     static_cast<double>(reader.remaining_bytes()) / (reader.is_ascii() ? 1 : prop.type.size);
                 if (!(n >= 0) || n > limit)
-                    throw InvalidInputError(what + ": list length " + number_text(n) +
-                                            " does not fit in the file");
+                    throw InvalidInputError(what + ": list length " + number_text(n) + " does not fit in the file");
                 const bool keep = is_face && static_cast<int>(k) == index_property;
                 if (keep)
                     polygon.reserve(static_cast<size_t>(n));

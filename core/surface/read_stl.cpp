@@ -7,11 +7,9 @@
 #include "core/surface/readers.h"
 #include "core/surface/text_scan.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-namespace
-{
+namespace {
 
 constexpr size_t header_size = 84;   // 80-byte header + uint32 triangle count
 constexpr size_t triangle_size = 50; // normal, 3 vertices (12 floats) + uint16 attribute
@@ -37,7 +35,7 @@ PolygonSoup read_binary(std::span<const uint8_t> bytes, uint32_t count)
     soup.polygons.reserve(count);
     for (size_t t = 0; t < count; ++t)
     {
-        const uint8_t *p = bytes.data() + header_size + t * triangle_size + 12;
+        const uint8_t* p = bytes.data() + header_size + t * triangle_size + 12;
         std::vector<uint32_t> polygon;
         for (int corner = 0; corner < 3; ++corner)
         {
@@ -72,7 +70,7 @@ PolygonSoup read_ascii(std::span<const uint8_t> bytes)
             continue;
         // Some exporters write the keywords in capitals.
         std::string keyword(token);
-        for (char &c : keyword)
+        for (char& c : keyword)
             c = static_cast<char>(c >= 'A' && c <= 'Z' ? c - 'A' + 'a' : c);
         const size_t n = lines.line_number();
         if (keyword == "outer")

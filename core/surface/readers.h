@@ -9,8 +9,7 @@
 
 #include "core/surface/polygon_soup.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
 PolygonSoup read_obj(std::span<const uint8_t> bytes);
 //! ASCII or binary, decided by the binary size rule (84 + 50 n bytes), not by the "solid" header.
@@ -19,6 +18,6 @@ PolygonSoup read_ply(std::span<const uint8_t> bytes);
 PolygonSoup read_off(std::span<const uint8_t> bytes);
 //! glTF (JSON) or GLB. `base_dir` is where external buffers are looked up; empty means the input
 //! came from memory, and external buffers are an error.
-PolygonSoup read_gltf(std::span<const uint8_t> bytes, bool binary, const std::string &base_dir);
+PolygonSoup read_gltf(std::span<const uint8_t> bytes, bool binary, const std::string& base_dir);
 
 } // namespace zomeify::detail

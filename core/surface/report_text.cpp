@@ -6,13 +6,11 @@
 
 #include <nlohmann/json.hpp>
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
-double diagonal(const SurfaceReport &r)
+double diagonal(const SurfaceReport& r)
 {
     double s = 0;
     for (int a = 0; a < 3; ++a)
@@ -20,12 +18,9 @@ double diagonal(const SurfaceReport &r)
     return std::sqrt(s);
 }
 
-std::string count(size_t n, const std::string &noun)
-{
-    return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
-}
+std::string count(size_t n, const std::string& noun) { return std::to_string(n) + " " + noun + (n == 1 ? "" : "s"); }
 
-std::string triple(const std::array<double, 3> &v)
+std::string triple(const std::array<double, 3>& v)
 {
     std::ostringstream os;
     os << std::setprecision(7) << v[0] << "  " << v[1] << "  " << v[2];
@@ -34,11 +29,12 @@ std::string triple(const std::array<double, 3> &v)
 
 } // namespace
 
-std::string surface_report_table(const SurfaceReport &r, const std::string &name)
+std::string surface_report_table(const SurfaceReport& r, const std::string& name)
 {
     std::ostringstream os;
-    const auto row = [&](const std::string &key, const std::string &value)
-    { os << std::left << std::setw(16) << key << value << "\n"; };
+    const auto row = [&](const std::string& key, const std::string& value) {
+        os << std::left << std::setw(16) << key << value << "\n";
+    };
     const auto yes_no = [](bool b) { return std::string(b ? "yes" : "no"); };
     row("file", name);
     row("input", std::to_string(r.input_vertices) + " vertices, " + std::to_string(r.input_faces) + " faces");
@@ -69,7 +65,7 @@ std::string surface_report_table(const SurfaceReport &r, const std::string &name
     return os.str();
 }
 
-std::string surface_report_json(const SurfaceReport &r, const std::string &name)
+std::string surface_report_json(const SurfaceReport& r, const std::string& name)
 {
     nlohmann::ordered_json j;
     j["file"] = name;

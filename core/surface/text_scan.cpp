@@ -7,25 +7,20 @@
 
 #include "core/base/errors.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-namespace
-{
+namespace {
 
-bool is_blank(char c)
-{
-    return c == ' ' || c == '\t' || c == '\v' || c == '\f';
-}
+bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f'; }
 
 } // namespace
 
 LineScanner::LineScanner(std::span<const uint8_t> bytes)
-    : text_(reinterpret_cast<const char *>(bytes.data()), bytes.size())
+    : text_(reinterpret_cast<const char*>(bytes.data()), bytes.size())
 {
 }
 
-bool LineScanner::next(std::string_view &line)
+bool LineScanner::next(std::string_view& line)
 {
     if (pos_ >= text_.size())
         return false;
@@ -59,7 +54,7 @@ size_t LineScanner::remaining_lines() const
     return lines + (rest.back() != '\n');
 }
 
-bool TokenSplitter::next(std::string_view &token)
+bool TokenSplitter::next(std::string_view& token)
 {
     while (pos_ < line_.size() && is_blank(line_[pos_]))
         ++pos_;
@@ -79,7 +74,7 @@ std::string_view TokenSplitter::rest()
     return line_.substr(pos_);
 }
 
-bool parse_double(std::string_view token, double &value)
+bool parse_double(std::string_view token, double& value)
 {
     // Floating-point from_chars is missing from Emscripten 3.1.6's libc++, so strtod on a bounded
     // NUL-terminated copy (the C locale's decimal point is '.', as the formats require).
@@ -87,25 +82,22 @@ bool parse_double(std::string_view token, double &value)
     if (token.empty() || token.size() >= buffer.size())
         return false;
     std::memcpy(buffer.data(), token.data(), token.size());
-    char *end = nullptr;
+    char* end = nullptr;
     value = std::strtod(buffer.data(), &end);
     return end == buffer.data() + token.size();
 }
 
-bool parse_int(std::string_view token, long long &value)
+bool parse_int(std::string_view token, long long& value)
 {
-    const char *first = token.data();
-    const char *last = token.data() + token.size();
+    const char* first = token.data();
+    const char* last = token.data() + token.size();
     if (first != last && *first == '+')
         ++first;
     const auto result = std::from_chars(first, last, value);
     return first != last && result.ec == std::errc() && result.ptr == last;
 }
 
-std::string at_line(size_t line_number)
-{
-    return "line " + std::to_string(line_number) + ": ";
-}
+std::string at_line(size_t line_number) { return "line " + std::to_string(line_number) + ": "; }
 
 std::string quoted(std::string_view token)
 {

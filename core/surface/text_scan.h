@@ -10,8 +10,7 @@
 #include <string>
 #include <string_view>
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
 //! Hands out the lines of a text buffer (LF or CRLF), without their line ending.
 class LineScanner
@@ -20,7 +19,7 @@ public:
     explicit LineScanner(std::span<const uint8_t> bytes);
 
     //! The next line; false at the end. Throws InvalidInputError on NUL or other control bytes.
-    bool next(std::string_view &line);
+    bool next(std::string_view& line);
     //! 1-based number of the line last returned.
     size_t line_number() const { return line_number_; }
     //! Lines (counting a last line without a newline) not yet returned.
@@ -38,7 +37,7 @@ class TokenSplitter
 public:
     explicit TokenSplitter(std::string_view line) : line_(line) {}
     //! The next token; false when none is left.
-    bool next(std::string_view &token);
+    bool next(std::string_view& token);
     //! Everything after the current position with leading blanks removed.
     std::string_view rest();
 
@@ -49,9 +48,9 @@ private:
 
 //! Parses a whole token as a decimal or scientific number ("nan" and "inf" parse and are caught by
 //! the callers' finiteness checks). False if the token is not entirely a number.
-bool parse_double(std::string_view token, double &value);
+bool parse_double(std::string_view token, double& value);
 //! Parses a whole token as a signed 64-bit integer.
-bool parse_int(std::string_view token, long long &value);
+bool parse_int(std::string_view token, long long& value);
 
 //! "line 12: " style prefix for messages.
 std::string at_line(size_t line_number);

@@ -7,11 +7,9 @@
 
 #include "core/surface/nesting.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 constexpr uint32_t none = 0xFFFFFFFFu;
 
@@ -48,10 +46,7 @@ struct EdgeUse
     uint8_t corner;
 };
 
-uint64_t edge_key(uint32_t a, uint32_t b)
-{
-    return (static_cast<uint64_t>(std::min(a, b)) << 32) | std::max(a, b);
-}
+uint64_t edge_key(uint32_t a, uint32_t b) { return (static_cast<uint64_t>(std::min(a, b)) << 32) | std::max(a, b); }
 
 // Which neighbour each face has across each of its three edges (manifold edges only), and whether
 // the two faces run along the shared edge in the same direction (inconsistent orientation).
@@ -63,8 +58,8 @@ struct Adjacency
 
 } // namespace
 
-TopologyInfo analyse_topology(const std::vector<Vec3> &positions, std::vector<std::array<uint32_t, 3>> &triangles,
-                              const TopologyOptions &options)
+TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<std::array<uint32_t, 3>>& triangles,
+                              const TopologyOptions& options)
 {
     TopologyInfo info;
     const size_t nf = triangles.size();
@@ -78,7 +73,7 @@ TopologyInfo analyse_topology(const std::vector<Vec3> &positions, std::vector<st
         for (uint8_t k = 0; k < 3; ++k)
             uses.push_back({edge_key(triangles[f][k], triangles[f][(k + 1) % 3]), f, k});
     std::sort(uses.begin(), uses.end(),
-              [](const EdgeUse &a, const EdgeUse &b) { return a.key != b.key ? a.key < b.key : a.face < b.face; });
+              [](const EdgeUse& a, const EdgeUse& b) { return a.key != b.key ? a.key < b.key : a.face < b.face; });
 
     Adjacency adj{std::vector<uint32_t>(3 * nf, none), std::vector<uint8_t>(3 * nf, 0)};
     UnionFind faces(nf);
@@ -108,8 +103,8 @@ TopologyInfo analyse_topology(const std::vector<Vec3> &positions, std::vector<st
         }
         else if (count == 2)
         {
-            const EdgeUse &u = uses[i];
-            const EdgeUse &w = uses[i + 1];
+            const EdgeUse& u = uses[i];
+            const EdgeUse& w = uses[i + 1];
             const uint32_t u_from = triangles[u.face][u.corner];
             const uint32_t w_from = triangles[w.face][w.corner];
             const bool same = u_from == w_from;
@@ -247,7 +242,7 @@ TopologyInfo analyse_topology(const std::vector<Vec3> &positions, std::vector<st
         const uint32_t c = component[f];
         if (anchor[c] == none)
             anchor[c] = triangles[f][0];
-        const Vec3 &o = positions[anchor[c]];
+        const Vec3& o = positions[anchor[c]];
         const Vec3 a = positions[triangles[f][0]] - o;
         const Vec3 b = positions[triangles[f][1]] - o;
         const Vec3 d = positions[triangles[f][2]] - o;

@@ -10,8 +10,7 @@
 
 #include "core/geom/triangle_mesh.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 struct TopologyOptions
 {
@@ -42,7 +41,7 @@ struct TopologyInfo
 
 //! Analyses (and with options.orient, reorients in place) `triangles` over `positions`.
 //! Triangles must have three distinct, in-range indices.
-TopologyInfo analyse_topology(const std::vector<Vec3> &positions, std::vector<std::array<uint32_t, 3>> &triangles,
-                              const TopologyOptions &options = {});
+TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<std::array<uint32_t, 3>>& triangles,
+                              const TopologyOptions& options = {});
 
 } // namespace zomeify

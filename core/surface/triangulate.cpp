@@ -2,27 +2,22 @@
 
 #include <Eigen/Geometry>
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 using Vec2 = Eigen::Vector2d;
 
-double cross2(const Vec2 &a, const Vec2 &b)
-{
-    return a.x() * b.y() - a.y() * b.x();
-}
+double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
-void fan(std::span<const uint32_t> polygon, std::vector<std::array<uint32_t, 3>> &out)
+void fan(std::span<const uint32_t> polygon, std::vector<std::array<uint32_t, 3>>& out)
 {
     for (size_t i = 1; i + 1 < polygon.size(); ++i)
         out.push_back({polygon[0], polygon[i], polygon[i + 1]});
 }
 
 // Strictly inside or on the edges of the counter-clockwise triangle abc.
-bool in_triangle(const Vec2 &p, const Vec2 &a, const Vec2 &b, const Vec2 &c)
+bool in_triangle(const Vec2& p, const Vec2& a, const Vec2& b, const Vec2& c)
 {
     return cross2(b - a, p - a) >= 0 && cross2(c - b, p - b) >= 0 && cross2(a - c, p - c) >= 0;
 }
@@ -30,8 +25,8 @@ bool in_triangle(const Vec2 &p, const Vec2 &a, const Vec2 &b, const Vec2 &c)
 // Ear clipping on a counter-clockwise simple polygon. False if no ear is found (the polygon is
 // not simple) or the work exceeds 4 n^2 point tests (a hostile polygon could otherwise cost n^3),
 // in which case `out` is left as it was.
-bool ear_clip(std::span<const uint32_t> polygon, const std::vector<Vec2> &pts,
-              std::vector<std::array<uint32_t, 3>> &out)
+bool ear_clip(std::span<const uint32_t> polygon, const std::vector<Vec2>& pts,
+              std::vector<std::array<uint32_t, 3>>& out)
 {
     std::vector<size_t> ring(polygon.size());
     for (size_t i = 0; i < ring.size(); ++i)
@@ -74,8 +69,8 @@ bool ear_clip(std::span<const uint32_t> polygon, const std::vector<Vec2> &pts,
 
 } // namespace
 
-void triangulate_polygon(const std::vector<Vec3> &positions, std::span<const uint32_t> polygon,
-                         std::vector<std::array<uint32_t, 3>> &out)
+void triangulate_polygon(const std::vector<Vec3>& positions, std::span<const uint32_t> polygon,
+                         std::vector<std::array<uint32_t, 3>>& out)
 {
     const size_t n = polygon.size();
     if (n == 3)

@@ -6,21 +6,19 @@
 #include <limits>
 #include <vector>
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 struct CellKey
 {
     int64_t x, y, z;
-    bool operator==(const CellKey &) const = default;
+    bool operator==(const CellKey&) const = default;
 };
 
 struct CellHash
 {
-    size_t operator()(const CellKey &k) const
+    size_t operator()(const CellKey& k) const
     {
         // Large odd multipliers spread neighbouring cells over the table.
         uint64_t h = static_cast<uint64_t>(k.x) * 0x9E3779B97F4A7C15ull;
@@ -50,7 +48,7 @@ public:
         values_.assign(capacity, no_vertex);
     }
     //! The head stored for `key`, or no_vertex.
-    uint32_t find(const CellKey &key) const
+    uint32_t find(const CellKey& key) const
     {
         for (size_t i = CellHash{}(key) & (keys_.size() - 1);; i = (i + 1) & (keys_.size() - 1))
         {
@@ -62,7 +60,7 @@ public:
     }
     //! The head for `key`, inserted as no_vertex if absent. At most `expected` keys are inserted,
     //! so the table is never more than half full.
-    uint32_t &slot(const CellKey &key)
+    uint32_t& slot(const CellKey& key)
     {
         for (size_t i = CellHash{}(key) & (keys_.size() - 1);; i = (i + 1) & (keys_.size() - 1))
         {
@@ -82,7 +80,7 @@ private:
 };
 
 // Exact duplicates: the bit patterns of the coordinates are the key (+0 and -0 made equal).
-std::vector<uint32_t> weld_exact(const std::vector<Vec3> &positions, const std::vector<bool> &skip)
+std::vector<uint32_t> weld_exact(const std::vector<Vec3>& positions, const std::vector<bool>& skip)
 {
     std::vector<uint32_t> target(positions.size());
     CellTable first(positions.size());
@@ -97,7 +95,7 @@ std::vector<uint32_t> weld_exact(const std::vector<Vec3> &positions, const std::
             const double v = positions[i][a] == 0.0 ? 0.0 : positions[i][a];
             std::memcpy(&bits[a], &v, sizeof v);
         }
-        uint32_t &earlier = first.slot(CellKey{bits[0], bits[1], bits[2]});
+        uint32_t& earlier = first.slot(CellKey{bits[0], bits[1], bits[2]});
         if (earlier == no_vertex)
             earlier = static_cast<uint32_t>(i);
         else
@@ -108,7 +106,7 @@ std::vector<uint32_t> weld_exact(const std::vector<Vec3> &positions, const std::
 
 } // namespace
 
-std::vector<uint32_t> weld_vertices(const std::vector<Vec3> &positions, double tolerance, const std::vector<bool> &skip)
+std::vector<uint32_t> weld_vertices(const std::vector<Vec3>& positions, double tolerance, const std::vector<bool>& skip)
 {
     if (!(tolerance > 0))
         return weld_exact(positions, skip);
@@ -133,7 +131,7 @@ std::vector<uint32_t> weld_vertices(const std::vector<Vec3> &positions, double t
         target[i] = static_cast<uint32_t>(i);
         if (skip[i])
             continue;
-        const Vec3 &p = positions[i];
+        const Vec3& p = positions[i];
         int64_t c[3];
         int lo_side[3], hi_side[3];
         for (int a = 0; a < 3; ++a)
@@ -156,7 +154,7 @@ std::vector<uint32_t> weld_vertices(const std::vector<Vec3> &positions, double t
             target[i] = found;
             continue;
         }
-        uint32_t &first = head.slot(CellKey{c[0], c[1], c[2]});
+        uint32_t& first = head.slot(CellKey{c[0], c[1], c[2]});
         next[i] = first;
         first = static_cast<uint32_t>(i);
     }

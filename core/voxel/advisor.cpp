@@ -5,11 +5,10 @@
 
 #include "core/base/stopwatch.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-AdvisorResult advise_resolution(const TriangleMesh &surface, long long surface_genus, const InsidePredicate &inside,
-                                const AdvisorOptions &options)
+AdvisorResult advise_resolution(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
+                                const AdvisorOptions& options)
 {
     Stopwatch clock;
     AdvisorResult result;
@@ -35,17 +34,13 @@ AdvisorResult advise_resolution(const TriangleMesh &surface, long long surface_g
     return result;
 }
 
-namespace
-{
+namespace {
 
-std::string handles(long long n)
-{
-    return n == 1 ? "the handle" : "the " + std::to_string(n) + " handles";
-}
+std::string handles(long long n) { return n == 1 ? "the handle" : "the " + std::to_string(n) + " handles"; }
 
 } // namespace
 
-std::string advice_message(int resolution, long long genus, const AdvisorResult &advice)
+std::string advice_message(int resolution, long long genus, const AdvisorResult& advice)
 {
     std::ostringstream os;
     const long long want = advice.surface_genus;
@@ -98,6 +93,5 @@ GenusAdvice genus_advice(const TriangleMesh& surface, long long surface_genus, c
     }
     return {advice_message(resolution, genus, found), found.found ? found.resolution : 0};
 }
-
 
 } // namespace zomeify

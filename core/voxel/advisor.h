@@ -10,8 +10,7 @@
 
 #include "core/voxel/initial_model.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! The finest grid the advice and the automatic resolution search by default (run_settings.h
 //! gives it to the page); a finer one is still accepted when asked for.
@@ -19,9 +18,9 @@ inline constexpr int kAdviceMaxResolution = 64;
 
 struct AdvisorOptions
 {
-    int min_resolution = 4;  //!< first resolution scanned
+    int min_resolution = 4;                    //!< first resolution scanned
     int max_resolution = kAdviceMaxResolution; //!< last resolution scanned
-    double seconds = 20.0;   //!< wall-time budget; the scan stops after the trial that exceeds it
+    double seconds = 20.0;                     //!< wall-time budget; the scan stops after the trial that exceeds it
     //! Retries and cleanup used for every trial (resolution ignored; target_genus is set to the
     //! surface's, so a resolution counts when it or one of its nudged grids keeps the genus).
     InitialModelOptions initial;
@@ -46,12 +45,12 @@ struct AdvisorResult
 };
 
 //! Scans resolutions min..max and stops at the first whose Z0 is valid with genus `surface_genus`.
-AdvisorResult advise_resolution(const TriangleMesh &surface, long long surface_genus, const InsidePredicate &inside,
-                                const AdvisorOptions &options = {});
+AdvisorResult advise_resolution(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
+                                const AdvisorOptions& options = {});
 
 //! A one-line explanation for a user whose choice gave Z0 the genus `genus` instead of the
 //! surface's, e.g. "at 10 cells the 4 handles of this shape close up; 14 keeps them".
-std::string advice_message(int resolution, long long genus, const AdvisorResult &advice);
+std::string advice_message(int resolution, long long genus, const AdvisorResult& advice);
 
 //! The hint for a user whose resolution gave Z0 the genus `genus` instead of the surface's ("" when
 //! they agree): the nearest finer grid that keeps it, else a coarser one, searched for at most
@@ -61,7 +60,7 @@ struct GenusAdvice
     std::string message; //!< "" when the genus is kept
     int resolution = 0;  //!< the grid that keeps the genus, 0 when none was found
 };
-GenusAdvice genus_advice(const TriangleMesh &surface, long long surface_genus, const InsidePredicate &inside,
+GenusAdvice genus_advice(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
                          int resolution, long long genus, double seconds);
 
 } // namespace zomeify

@@ -5,26 +5,23 @@
 
 #include "core/base/stopwatch.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 std::string holes(long long genus)
 {
     return genus == 1 ? "the hole through it" : "its " + std::to_string(genus) + " holes";
 }
 
-std::string explain(const AutoResolution &r, const AutoResolutionOptions &o)
+std::string explain(const AutoResolution& r, const AutoResolutionOptions& o)
 {
     std::ostringstream os;
     os << r.resolution << " cells (" << r.balls << " balls): ";
     if (r.genus_kept && r.surface_genus == 0)
         os << "the coarsest grid with at least " << o.min_balls << " balls";
     else if (r.genus_kept)
-        os << "the coarsest grid that keeps " << holes(r.surface_genus) << " with at least " << o.min_balls
-           << " balls";
+        os << "the coarsest grid that keeps " << holes(r.surface_genus) << " with at least " << o.min_balls << " balls";
     else
         os << "no grid up to " << r.searched_to << " cells keeps " << holes(r.surface_genus)
            << " (parts of the shape are thinner than a strut can follow); the model will have genus " << r.genus;
@@ -33,8 +30,8 @@ std::string explain(const AutoResolution &r, const AutoResolutionOptions &o)
 
 } // namespace
 
-AutoResolution choose_resolution(const TriangleMesh &surface, long long surface_genus, const InsidePredicate &inside,
-                                 const AutoResolutionOptions &options)
+AutoResolution choose_resolution(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
+                                 const AutoResolutionOptions& options)
 {
     Stopwatch clock;
     AutoResolution best;
@@ -51,7 +48,7 @@ AutoResolution choose_resolution(const TriangleMesh &surface, long long surface_
         best.searched_to = n;
         const bool enough = z0.model.nodes.size() >= options.min_balls;
         const bool kept = z0.report.valid && z0.report.topology.genus == surface_genus;
-        AutoResolution &target = kept && enough ? best : fallback;
+        AutoResolution& target = kept && enough ? best : fallback;
         if ((kept && enough) || (z0.report.valid && enough && fallback.resolution == 0))
         {
             target.resolution = n;

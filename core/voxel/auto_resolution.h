@@ -11,8 +11,7 @@
 
 #include "core/voxel/advisor.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 struct AutoResolutionOptions
 {
@@ -42,7 +41,7 @@ struct AutoResolution
     std::string message;
 };
 
-AutoResolution choose_resolution(const TriangleMesh &surface, long long surface_genus, const InsidePredicate &inside,
-                                 const AutoResolutionOptions &options = {});
+AutoResolution choose_resolution(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
+                                 const AutoResolutionOptions& options = {});
 
 } // namespace zomeify

@@ -7,25 +7,23 @@
 #include "core/voxel/repair.h"
 #include "core/voxel/simple_voxel.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 struct CellIndex
 {
     int i, j, k;
 };
 
-bool on_boundary(const VoxelGrid &grid, int i, int j, int k)
+bool on_boundary(const VoxelGrid& grid, int i, int j, int k)
 {
     return !grid.occupied(i - 1, j, k) || !grid.occupied(i + 1, j, k) || !grid.occupied(i, j - 1, k) ||
            !grid.occupied(i, j + 1, k) || !grid.occupied(i, j, k - 1) || !grid.occupied(i, j, k + 1);
 }
 
 // After a flip only the stars of the cell's 8 corners change.
-bool corners_manifold(const VoxelGrid &grid, int i, int j, int k)
+bool corners_manifold(const VoxelGrid& grid, int i, int j, int k)
 {
     for (int c = 0; c < 8; ++c)
         if (!is_manifold_star(vertex_star(grid, i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))))
@@ -34,9 +32,9 @@ bool corners_manifold(const VoxelGrid &grid, int i, int j, int k)
 }
 
 // Distance from p (inside cell c) to the nearest occupied neighbour cube of c, in cells.
-double distance_to_neighbours(const VoxelGrid &grid, const CellIndex &c, const Vec3 &p)
+double distance_to_neighbours(const VoxelGrid& grid, const CellIndex& c, const Vec3& p)
 {
-    const GridSpec &spec = grid.spec();
+    const GridSpec& spec = grid.spec();
     double best = 2.0;
     for (int dz = -1; dz <= 1; ++dz)
         for (int dy = -1; dy <= 1; ++dy)
@@ -59,9 +57,9 @@ double distance_to_neighbours(const VoxelGrid &grid, const CellIndex &c, const V
 
 // True if S comes near a point of the cell (a 3×3×3 lattice over it) that would be more than half
 // a cell from every remaining cell: removing it would leave that part of S without model.
-bool holds_surface_alone(const VoxelGrid &grid, const CellIndex &c, const SurfaceProbeAt &probe)
+bool holds_surface_alone(const VoxelGrid& grid, const CellIndex& c, const SurfaceProbeAt& probe)
 {
-    const GridSpec &spec = grid.spec();
+    const GridSpec& spec = grid.spec();
     const double near = 0.3 * spec.cell;
     for (int z = 0; z <= 2; ++z)
         for (int y = 0; y <= 2; ++y)
@@ -76,7 +74,7 @@ bool holds_surface_alone(const VoxelGrid &grid, const CellIndex &c, const Surfac
 
 // True if an occupied neighbour of the empty cell c shows a face toward c (its outward normal
 // points into c) that points against S's normal at the face's centre.
-bool borders_fold_over(const VoxelGrid &grid, const CellIndex &c, const SurfaceProbeAt &probe)
+bool borders_fold_over(const VoxelGrid& grid, const CellIndex& c, const SurfaceProbeAt& probe)
 {
     const Vec3 centre = grid.cell_centre(c.i, c.j, c.k);
     for (int axis = 0; axis < 3; ++axis)
@@ -96,19 +94,18 @@ bool borders_fold_over(const VoxelGrid &grid, const CellIndex &c, const SurfaceP
 
 } // namespace
 
-SurfaceProbeAt probe_of(const SurfaceProjector &projector)
+SurfaceProbeAt probe_of(const SurfaceProjector& projector)
 {
-    return [&projector](const Vec3 &p)
-    {
+    return [&projector](const Vec3& p) {
         const ClosestPoint c = projector.project(p);
         return SurfaceProbe{std::sqrt(c.distance_squared), c.normal};
     };
 }
 
-CarveReport carve_outside_cells(VoxelGrid &grid, const InsidePredicate &inside, const SurfaceProbeAt &probe)
+CarveReport carve_outside_cells(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe)
 {
     CarveReport report;
-    const auto &d = grid.dims();
+    const auto& d = grid.dims();
     // Whether a centre is outside S never changes; ask once per cell, lazily (-1 = not asked).
     std::vector<signed char> outside(grid.cell_count(), -1);
     std::vector<CellIndex> layer, carved;
@@ -124,14 +121,14 @@ CarveReport carve_outside_cells(VoxelGrid &grid, const InsidePredicate &inside, 
                 {
                     if (!grid.occupied(i, j, k) || !on_boundary(grid, i, j, k))
                         continue;
-                    signed char &o = outside[grid.index(i, j, k)];
+                    signed char& o = outside[grid.index(i, j, k)];
                     if (o < 0)
                         o = inside(grid.cell_centre(i, j, k)) ? 0 : 1;
                     if (o)
                         layer.push_back({i, j, k});
                 }
         size_t removed = 0;
-        for (const CellIndex &c : layer)
+        for (const CellIndex& c : layer)
         {
             if (!is_simple(neighbourhood(grid, c.i, c.j, c.k)))
                 continue;
@@ -163,7 +160,7 @@ CarveReport carve_outside_cells(VoxelGrid &grid, const InsidePredicate &inside, 
     for (bool changed = true; changed;)
     {
         changed = false;
-        for (const CellIndex &c : carved)
+        for (const CellIndex& c : carved)
         {
             if (grid.occupied(c.i, c.j, c.k) || !borders_fold_over(grid, c, probe) ||
                 !is_simple(neighbourhood(grid, c.i, c.j, c.k)))

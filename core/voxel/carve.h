@@ -14,8 +14,7 @@
 #include "core/voxel/voxel_grid.h"
 #include "core/voxel/voxelize.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! What carving needs to know of S at a point: the distance to S and S's unit outward normal at
 //! the closest point.
@@ -24,17 +23,17 @@ struct SurfaceProbe
     double distance = 0.0;
     Vec3 normal = Vec3::UnitZ();
 };
-using SurfaceProbeAt = std::function<SurfaceProbe(const Vec3 &)>;
+using SurfaceProbeAt = std::function<SurfaceProbe(const Vec3&)>;
 
 //! The probe of S through its projector (which must outlive the probe).
-SurfaceProbeAt probe_of(const SurfaceProjector &projector);
+SurfaceProbeAt probe_of(const SurfaceProjector& projector);
 
 struct CarveReport
 {
-    size_t removed = 0;  //!< cells removed
-    size_t restored = 0; //!< of those, put back to undo a fold-over
+    size_t removed = 0;           //!< cells removed
+    size_t restored = 0;          //!< of those, put back to undo a fold-over
     size_t kept_for_coverage = 0; //!< outside cells kept because S passes through their far side
-    int passes = 0;      //!< layers peeled (the last one removed nothing)
+    int passes = 0;               //!< layers peeled (the last one removed nothing)
 };
 
 //! Carves `grid` (which must be manifold: repair_manifold() first). `inside` classifies cell centres.
@@ -42,6 +41,6 @@ struct CarveReport
 //! cells that would remain (the tip of a thin leg: carving it would shorten the leg), and carved
 //! cells across which the result shows a face turned against S's normal (a fold-over: the model lies
 //! across a thin part there) are put back where the topology allows.
-CarveReport carve_outside_cells(VoxelGrid &grid, const InsidePredicate &inside, const SurfaceProbeAt &probe = nullptr);
+CarveReport carve_outside_cells(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe = nullptr);
 
 } // namespace zomeify

@@ -5,11 +5,9 @@
 
 #include "core/zome/qphi.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 // Union-find over node indices, for counting the boundary's components.
 class Components
@@ -37,24 +35,20 @@ private:
 
 } // namespace
 
-ZVec grid_corner_node(int i, int j, int k)
-{
-    return ZVec{{2 * i, 0, 2 * j, 0, 2 * k, 0}};
-}
+ZVec grid_corner_node(int i, int j, int k) { return ZVec{{2 * i, 0, 2 * j, 0, 2 * k, 0}}; }
 
-Extraction extract_boundary(const VoxelGrid &grid)
+Extraction extract_boundary(const VoxelGrid& grid)
 {
-    const auto &d = grid.dims();
+    const auto& d = grid.dims();
     const size_t vx = d[0] + 1, vy = d[1] + 1, vz = d[2] + 1;
     // Node ids by grid corner. A dense table is the fastest lookup and costs 4 bytes per corner,
     // which is small next to the cell array for any grid this tool builds.
     std::vector<uint32_t> node_of(vx * vy * vz, UINT32_MAX);
     Extraction out;
-    ZomeModel &m = out.model;
+    ZomeModel& m = out.model;
 
-    auto node = [&](int i, int j, int k)
-    {
-        uint32_t &id = node_of[(static_cast<size_t>(k) * vy + j) * vx + i];
+    auto node = [&](int i, int j, int k) {
+        uint32_t& id = node_of[(static_cast<size_t>(k) * vy + j) * vx + i];
         if (id == UINT32_MAX)
         {
             id = static_cast<uint32_t>(m.nodes.size());
@@ -65,9 +59,8 @@ Extraction extract_boundary(const VoxelGrid &grid)
 
     // Struts are keyed by the lower corner and the axis: each boundary edge appears in two quads.
     std::unordered_map<uint64_t, uint32_t> strut_of;
-    auto strut = [&](const std::array<int, 3> &p, const std::array<int, 3> &q, uint32_t a, uint32_t b)
-    {
-        const auto &lo = p < q ? p : q;
+    auto strut = [&](const std::array<int, 3>& p, const std::array<int, 3>& q, uint32_t a, uint32_t b) {
+        const auto& lo = p < q ? p : q;
         const int axis = p[0] != q[0] ? 0 : p[1] != q[1] ? 1 : 2;
         const uint64_t key = ((static_cast<uint64_t>(lo[2]) * vy + lo[1]) * vx + lo[0]) * 3 + axis;
         if (strut_of.emplace(key, static_cast<uint32_t>(m.struts.size())).second)
@@ -114,7 +107,7 @@ Extraction extract_boundary(const VoxelGrid &grid)
     m.transform.translation = {grid.spec().origin.x(), grid.spec().origin.y(), grid.spec().origin.z()};
 
     Components comps(m.nodes.size());
-    for (const auto &s : m.struts)
+    for (const auto& s : m.struts)
         comps.join(s[0], s[1]);
     out.topology.components = comps.count();
     out.topology.euler = static_cast<long long>(m.nodes.size()) - static_cast<long long>(m.struts.size()) +

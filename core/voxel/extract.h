@@ -7,8 +7,7 @@
 #include "core/voxel/voxel_grid.h"
 #include "core/zome/model.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! The Zome node of grid corner (i, j, k): b1 = φ per cell along each axis.
 ZVec grid_corner_node(int i, int j, int k);
@@ -30,6 +29,6 @@ struct Extraction
 //! Extracts the boundary quads of the occupied cells. The transform maps Zome units to mesh units:
 //! scale = cell / φ, translation = the grid's origin. The result is a closed 2-manifold when
 //! count_nonmanifold_vertices(grid) == 0 (see repair.h).
-Extraction extract_boundary(const VoxelGrid &grid);
+Extraction extract_boundary(const VoxelGrid& grid);
 
 } // namespace zomeify

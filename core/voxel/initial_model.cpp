@@ -7,10 +7,9 @@
 
 #include "core/base/stopwatch.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-GridLayoutOptions nudged_layout(const InitialModelOptions &options, int attempt)
+GridLayoutOptions nudged_layout(const InitialModelOptions& options, int attempt)
 {
     GridLayoutOptions layout;
     layout.resolution = options.resolution;
@@ -31,10 +30,9 @@ GridLayoutOptions nudged_layout(const InitialModelOptions &options, int attempt)
     return layout;
 }
 
-namespace
-{
+namespace {
 
-std::string describe(const GridSpec &grid, const GridLayoutOptions &layout)
+std::string describe(const GridSpec& grid, const GridLayoutOptions& layout)
 {
     std::ostringstream os;
     os << "grid " << grid.dims[0] << "x" << grid.dims[1] << "x" << grid.dims[2] << " (cell x" << layout.scale_factor
@@ -44,11 +42,11 @@ std::string describe(const GridSpec &grid, const GridLayoutOptions &layout)
 
 // Carves the accepted grid and extracts Z0 again. Carving keeps the topology, so the genus is judged
 // on the plain grid and only the grid that is kept pays for the carving.
-void carve(VoxelGrid &grid, InitialModel &out, const InitialModelOptions &options, const InsidePredicate *inside)
+void carve(VoxelGrid& grid, InitialModel& out, const InitialModelOptions& options, const InsidePredicate* inside)
 {
     if (!options.carve || !inside)
         return;
-    InitialModelReport &rep = out.report;
+    InitialModelReport& rep = out.report;
     rep.carve = carve_outside_cells(grid, *inside, options.surface_probe);
     rep.voxels = grid.occupied_count();
     Extraction ex = extract_boundary(grid);
@@ -58,12 +56,12 @@ void carve(VoxelGrid &grid, InitialModel &out, const InitialModelOptions &option
 
 } // namespace
 
-InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSource &source,
-                                 const InitialModelOptions &options, const InsidePredicate *carve_inside)
+InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSource& source,
+                                 const InitialModelOptions& options, const InsidePredicate* carve_inside)
 {
     Stopwatch clock;
     InitialModel out;
-    InitialModelReport &rep = out.report;
+    InitialModelReport& rep = out.report;
     // The first manifold result, kept in case no nudged grid reaches the target genus: the user's
     // own grid then wins over a nudged one that is no better.
     struct FirstValid
@@ -127,12 +125,11 @@ InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSou
     return out;
 }
 
-InitialModel build_initial_model(const TriangleMesh &surface, const InsidePredicate &inside,
-                                 const InitialModelOptions &options)
+InitialModel build_initial_model(const TriangleMesh& surface, const InsidePredicate& inside,
+                                 const InitialModelOptions& options)
 {
     std::vector<VoxelizeStats> stats;
-    auto source = [&](const GridSpec &spec)
-    {
+    auto source = [&](const GridSpec& spec) {
         stats.emplace_back();
         return voxelize(surface, spec, inside, &stats.back());
     };

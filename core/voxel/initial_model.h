@@ -15,8 +15,7 @@
 #include "core/voxel/voxel_grid.h"
 #include "core/voxel/voxelize.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 struct InitialModelOptions
 {
@@ -61,19 +60,19 @@ struct InitialModel
 };
 
 //! Produces the occupied cells of a grid (voxelize() in practice; tests use synthetic sets).
-using VoxelSource = std::function<VoxelGrid(const GridSpec &)>;
+using VoxelSource = std::function<VoxelGrid(const GridSpec&)>;
 
 //! The layout of retry `attempt` (0 = the plain grid): a cell size changed by up to ±4% and an
 //! offset of a fraction of a cell, different for every attempt.
-GridLayoutOptions nudged_layout(const InitialModelOptions &options, int attempt);
+GridLayoutOptions nudged_layout(const InitialModelOptions& options, int attempt);
 
 //! Builds Z0 over the box `bbox` (min, max) from the cells `source` gives for each grid tried;
 //! with `carve_inside` (and options.carve) each manifold cell set is carved with it.
-InitialModel build_initial_model(const std::array<Vec3, 2> &bbox, const VoxelSource &source,
-                                 const InitialModelOptions &options, const InsidePredicate *carve_inside = nullptr);
+InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSource& source,
+                                 const InitialModelOptions& options, const InsidePredicate* carve_inside = nullptr);
 
 //! Builds Z0 for surface S; `inside` classifies points of space (e.g. geom's InsideTest).
-InitialModel build_initial_model(const TriangleMesh &surface, const InsidePredicate &inside,
-                                 const InitialModelOptions &options);
+InitialModel build_initial_model(const TriangleMesh& surface, const InsidePredicate& inside,
+                                 const InitialModelOptions& options);
 
 } // namespace zomeify

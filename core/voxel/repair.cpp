@@ -6,11 +6,9 @@
 
 #include "core/voxel/simple_voxel.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 // The 8 cells around a vertex are the corners of a unit cube (bit i = axis i); two cells share a
 // face when their bits differ in one place, and the four cells around one of the vertex's 6 grid
@@ -65,10 +63,10 @@ std::array<bool, 256> make_manifold_table()
 class Repairer
 {
 public:
-    Repairer(VoxelGrid &grid, const RepairOptions &options)
+    Repairer(VoxelGrid& grid, const RepairOptions& options)
         : grid_(grid), options_(options), flipped_(grid.cell_count(), 0)
     {
-        const auto &d = grid.dims();
+        const auto& d = grid.dims();
         vdims_ = {d[0] + 1, d[1] + 1, d[2] + 1};
     }
 
@@ -99,7 +97,7 @@ private:
     bool bad(int x, int y, int z) const { return !is_manifold_star(vertex_star(grid_, x, y, z)); }
 
     // Non-manifold vertices among the 8 corners of cell c.
-    int bad_corners(const std::array<int, 3> &c) const
+    int bad_corners(const std::array<int, 3>& c) const
     {
         int n = 0;
         for (int b = 0; b < 8; ++b)
@@ -107,7 +105,7 @@ private:
         return n;
     }
 
-    int face_neighbours(const std::array<int, 3> &c) const
+    int face_neighbours(const std::array<int, 3>& c) const
     {
         int n = 0;
         for (int a = 0; a < 3; ++a)
@@ -120,14 +118,14 @@ private:
         return n;
     }
 
-    void flip(const std::array<int, 3> &c, Cell to) { grid_.set(c[0], c[1], c[2], to); }
+    void flip(const std::array<int, 3>& c, Cell to) { grid_.set(c[0], c[1], c[2], to); }
 
     // Chooses, among the simple cells of the vertex's star that were not flipped yet, the flip that
     // best cleans up: first one that makes this vertex manifold, then the one that removes the most
     // non-manifold corners, then (geometry) removing a cell S only crosses, adding a cell, and last
     // removing a cell inside S; ties go to the cell with the fewest (removal) or most (addition)
     // occupied face neighbours, i.e. the one that sticks out or fills a notch.
-    void fix(const std::array<int, 3> &v, RepairReport &report)
+    void fix(const std::array<int, 3>& v, RepairReport& report)
     {
         struct Candidate
         {
@@ -180,7 +178,7 @@ private:
         }
     }
 
-    bool on_border(const std::array<int, 3> &c) const
+    bool on_border(const std::array<int, 3>& c) const
     {
         for (int a = 0; a < 3; ++a)
             if (c[a] == 0 || c[a] == grid_.dims()[a] - 1)
@@ -188,8 +186,8 @@ private:
         return false;
     }
 
-    VoxelGrid &grid_;
-    const RepairOptions &options_;
+    VoxelGrid& grid_;
+    const RepairOptions& options_;
     std::vector<uint8_t> flipped_;
     std::array<int, 3> vdims_{};
     std::deque<std::array<int, 3>> queue_;
@@ -197,7 +195,7 @@ private:
 
 } // namespace
 
-VertexStar vertex_star(const VoxelGrid &grid, int vx, int vy, int vz)
+VertexStar vertex_star(const VoxelGrid& grid, int vx, int vy, int vz)
 {
     VertexStar s = 0;
     for (int b = 0; b < 8; ++b)
@@ -212,9 +210,9 @@ bool is_manifold_star(VertexStar star)
     return table[star];
 }
 
-size_t count_nonmanifold_vertices(const VoxelGrid &grid)
+size_t count_nonmanifold_vertices(const VoxelGrid& grid)
 {
-    const auto &d = grid.dims();
+    const auto& d = grid.dims();
     size_t n = 0;
     for (int z = 0; z <= d[2]; ++z)
         for (int y = 0; y <= d[1]; ++y)
@@ -223,9 +221,6 @@ size_t count_nonmanifold_vertices(const VoxelGrid &grid)
     return n;
 }
 
-RepairReport repair_manifold(VoxelGrid &grid, const RepairOptions &options)
-{
-    return Repairer(grid, options).run();
-}
+RepairReport repair_manifold(VoxelGrid& grid, const RepairOptions& options) { return Repairer(grid, options).run(); }
 
 } // namespace zomeify

@@ -9,15 +9,14 @@
 
 #include "core/voxel/voxel_grid.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! Occupancy of the 8 cells around a grid vertex: bit dx + 2·dy + 4·dz for the cell whose corner
 //! at offset (1-dx, 1-dy, 1-dz) is the vertex, i.e. cell (vx-1+dx, vy-1+dy, vz-1+dz).
 using VertexStar = uint8_t;
 
 //! The star of grid vertex (vx, vy, vz); vertices range over 0..dims inclusive.
-VertexStar vertex_star(const VoxelGrid &grid, int vx, int vy, int vz);
+VertexStar vertex_star(const VoxelGrid& grid, int vx, int vy, int vz);
 
 //! True if the boundary of the occupied cells is a disk (or empty) near the vertex: no two
 //! occupied cells meet only along an edge there (non-manifold edge) and the occupied and the empty
@@ -25,7 +24,7 @@ VertexStar vertex_star(const VoxelGrid &grid, int vx, int vy, int vz);
 bool is_manifold_star(VertexStar star);
 
 //! Number of grid vertices whose star is not manifold.
-size_t count_nonmanifold_vertices(const VoxelGrid &grid);
+size_t count_nonmanifold_vertices(const VoxelGrid& grid);
 
 struct RepairOptions
 {
@@ -47,6 +46,6 @@ struct RepairReport
 //! Removes (and, if allowed, adds) simple cells incident to non-manifold vertices until none is
 //! left or no simple flip is possible there. Each cell is flipped at most once, so this ends.
 //! Cells of the grid's outer layer are never added (it stays empty).
-RepairReport repair_manifold(VoxelGrid &grid, const RepairOptions &options = {});
+RepairReport repair_manifold(VoxelGrid& grid, const RepairOptions& options = {});
 
 } // namespace zomeify

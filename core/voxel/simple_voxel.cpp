@@ -3,11 +3,9 @@
 #include <array>
 #include <cstdlib>
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 constexpr int kCentre = 13;
 
@@ -20,10 +18,7 @@ struct AdjacencyTables
     uint32_t n6 = 0;                  // the 6 face neighbours of the centre
 };
 
-int offset(int bit, int axis)
-{
-    return (axis == 0 ? bit % 3 : axis == 1 ? (bit / 3) % 3 : bit / 9) - 1;
-}
+int offset(int bit, int axis) { return (axis == 0 ? bit % 3 : axis == 1 ? (bit / 3) % 3 : bit / 9) - 1; }
 
 AdjacencyTables make_tables()
 {
@@ -60,14 +55,14 @@ AdjacencyTables make_tables()
     return t;
 }
 
-const AdjacencyTables &tables()
+const AdjacencyTables& tables()
 {
     static const AdjacencyTables t = make_tables();
     return t;
 }
 
 // Grows the component of `seed` inside `set` along `adj`; returns its cells.
-uint32_t flood(uint32_t seed, uint32_t set, const std::array<uint32_t, 27> &adj)
+uint32_t flood(uint32_t seed, uint32_t set, const std::array<uint32_t, 27>& adj)
 {
     uint32_t comp = seed, frontier = seed;
     while (frontier)
@@ -84,7 +79,7 @@ uint32_t flood(uint32_t seed, uint32_t set, const std::array<uint32_t, 27> &adj)
 
 } // namespace
 
-Neighbourhood neighbourhood(const VoxelGrid &grid, int i, int j, int k)
+Neighbourhood neighbourhood(const VoxelGrid& grid, int i, int j, int k)
 {
     Neighbourhood n = 0;
     int bit = 0;
@@ -98,7 +93,7 @@ Neighbourhood neighbourhood(const VoxelGrid &grid, int i, int j, int k)
 
 int object_components(Neighbourhood n)
 {
-    const auto &t = tables();
+    const auto& t = tables();
     uint32_t rest = n & t.n26;
     int count = 0;
     while (rest)
@@ -111,7 +106,7 @@ int object_components(Neighbourhood n)
 
 int background_components(Neighbourhood n)
 {
-    const auto &t = tables();
+    const auto& t = tables();
     const uint32_t background = ~n & t.n18;
     uint32_t seeds = background & t.n6;
     int count = 0;
@@ -123,9 +118,6 @@ int background_components(Neighbourhood n)
     return count;
 }
 
-bool is_simple(Neighbourhood n)
-{
-    return object_components(n) == 1 && background_components(n) == 1;
-}
+bool is_simple(Neighbourhood n) { return object_components(n) == 1 && background_components(n) == 1; }
 
 } // namespace zomeify

@@ -9,15 +9,14 @@
 
 #include "core/voxel/voxel_grid.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! Occupancy of a 3×3×3 neighbourhood: bit (dx+1) + 3·(dy+1) + 9·(dz+1) for the cell at offset
 //! (dx, dy, dz), each offset in {-1, 0, 1}. Bit 13 (the centre) is ignored by the tests below.
 using Neighbourhood = uint32_t;
 
 //! The neighbourhood of cell (i, j, k) in the grid (cells outside the grid are empty).
-Neighbourhood neighbourhood(const VoxelGrid &grid, int i, int j, int k);
+Neighbourhood neighbourhood(const VoxelGrid& grid, int i, int j, int k);
 
 //! T26: the number of 26-connected components of the object in the 26 neighbours.
 int object_components(Neighbourhood n);

@@ -5,11 +5,9 @@
 
 #include <Eigen/Geometry>
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 // Projections of the triangle onto an axis separate it from the box (radius r about 0)?
 // Closed contact: touching intervals do not separate; open contact: they do.
@@ -20,7 +18,7 @@ bool separated(double lo, double hi, double r, BoxContact contact)
     return lo >= r || hi <= -r;
 }
 
-bool separated_on(const Vec3 &axis, const Vec3 &v0, const Vec3 &v1, const Vec3 &v2, const Vec3 &half,
+bool separated_on(const Vec3& axis, const Vec3& v0, const Vec3& v1, const Vec3& v2, const Vec3& half,
                   BoxContact contact)
 {
     // A vanishing axis (edge parallel to a box axis, or a degenerate triangle) proves nothing;
@@ -35,7 +33,7 @@ bool separated_on(const Vec3 &axis, const Vec3 &v0, const Vec3 &v1, const Vec3 &
 
 } // namespace
 
-bool triangle_box_overlap(const Vec3 &centre, const Vec3 &half, const Vec3 &a, const Vec3 &b, const Vec3 &c,
+bool triangle_box_overlap(const Vec3& centre, const Vec3& half, const Vec3& a, const Vec3& b, const Vec3& c,
                           BoxContact contact)
 {
     const Vec3 v0 = a - centre, v1 = b - centre, v2 = c - centre;
@@ -54,7 +52,7 @@ bool triangle_box_overlap(const Vec3 &centre, const Vec3 &half, const Vec3 &a, c
         return false;
 
     const Vec3 edges[3] = {e0, e1, e2};
-    for (const Vec3 &e : edges)
+    for (const Vec3& e : edges)
         for (int k = 0; k < 3; ++k)
             if (separated_on(e.cross(Vec3::Unit(k)), v0, v1, v2, half, contact))
                 return false;

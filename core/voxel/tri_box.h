@@ -5,8 +5,7 @@
 
 #include "core/geom/triangle_mesh.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! How the box boundary counts.
 enum class BoxContact
@@ -17,7 +16,7 @@ enum class BoxContact
 
 //! True if triangle (a, b, c) meets the box centre ± half (half > 0 per axis).
 //! A degenerate triangle (a segment or a point) is handled: the axes that vanish are skipped.
-bool triangle_box_overlap(const Vec3 &centre, const Vec3 &half, const Vec3 &a, const Vec3 &b, const Vec3 &c,
+bool triangle_box_overlap(const Vec3& centre, const Vec3& half, const Vec3& a, const Vec3& b, const Vec3& c,
                           BoxContact contact);
 
 } // namespace zomeify

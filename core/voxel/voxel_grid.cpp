@@ -6,10 +6,9 @@
 
 #include "core/base/errors.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-GridSpec layout_grid(const Vec3 &lo, const Vec3 &hi, const GridLayoutOptions &options)
+GridSpec layout_grid(const Vec3& lo, const Vec3& hi, const GridLayoutOptions& options)
 {
     const Vec3 extent = hi - lo;
     if (!lo.allFinite() || !hi.allFinite() || (extent.array() < 0.0).any())
@@ -52,12 +51,12 @@ GridSpec layout_grid(const Vec3 &lo, const Vec3 &hi, const GridLayoutOptions &op
     return spec;
 }
 
-std::array<Vec3, 2> bounding_box(const TriangleMesh &mesh)
+std::array<Vec3, 2> bounding_box(const TriangleMesh& mesh)
 {
     if (mesh.positions.empty())
         throw InvalidInputError("voxel grid: the surface has no vertices");
     Vec3 lo = mesh.positions.front(), hi = lo;
-    for (const Vec3 &p : mesh.positions)
+    for (const Vec3& p : mesh.positions)
     {
         lo = lo.cwiseMin(p);
         hi = hi.cwiseMax(p);
@@ -65,7 +64,7 @@ std::array<Vec3, 2> bounding_box(const TriangleMesh &mesh)
     return {lo, hi};
 }
 
-VoxelGrid::VoxelGrid(const GridSpec &spec)
+VoxelGrid::VoxelGrid(const GridSpec& spec)
     : spec_(spec), cells_(static_cast<size_t>(spec.dims[0]) * spec.dims[1] * spec.dims[2], Cell::Empty)
 {
 }

@@ -11,8 +11,7 @@
 
 #include "core/geom/triangle_mesh.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! Where the grid lies: the corner of cell (0,0,0), the cell edge, and the cell counts per axis.
 struct GridSpec
@@ -38,10 +37,10 @@ struct GridLayoutOptions
 //! The grid over the box [lo, hi]: centred on it (up to `offset`), with at least one empty layer of
 //! cells around every cell that can touch the box, so every cell touching S lies inside the grid.
 //! Throws InvalidInputError for an empty box, a non-positive size, or more than 2^31 cells.
-GridSpec layout_grid(const Vec3 &lo, const Vec3 &hi, const GridLayoutOptions &options);
+GridSpec layout_grid(const Vec3& lo, const Vec3& hi, const GridLayoutOptions& options);
 
 //! The bounding box of a mesh's vertices. Throws InvalidInputError for a mesh without vertices.
-std::array<Vec3, 2> bounding_box(const TriangleMesh &mesh);
+std::array<Vec3, 2> bounding_box(const TriangleMesh& mesh);
 
 //! Cell states. Occupied cells are `Surface` (their interior meets S) or `Inside` (inside S);
 //! the cleanup marks cells it adds as `Added`.
@@ -58,10 +57,10 @@ class VoxelGrid
 {
 public:
     VoxelGrid() = default;
-    explicit VoxelGrid(const GridSpec &spec);
+    explicit VoxelGrid(const GridSpec& spec);
 
-    const GridSpec &spec() const { return spec_; }
-    const std::array<int, 3> &dims() const { return spec_.dims; }
+    const GridSpec& spec() const { return spec_; }
+    const std::array<int, 3>& dims() const { return spec_.dims; }
     size_t cell_count() const { return cells_.size(); }
 
     bool contains(int i, int j, int k) const
@@ -75,8 +74,8 @@ public:
     void set(int i, int j, int k, Cell c) { cells_[index(i, j, k)] = c; }
 
     //! Raw cell states in index() order.
-    const std::vector<Cell> &cells() const { return cells_; }
-    std::vector<Cell> &cells() { return cells_; }
+    const std::vector<Cell>& cells() const { return cells_; }
+    std::vector<Cell>& cells() { return cells_; }
 
     //! Number of occupied cells.
     size_t occupied_count() const;

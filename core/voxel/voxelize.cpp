@@ -6,11 +6,9 @@
 
 #include "core/voxel/tri_box.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-namespace
-{
+namespace {
 
 // Per-cell marks while scanning triangles.
 constexpr uint8_t kTouched = 1; // S meets the closed cell (slightly inflated, to be safe)
@@ -25,7 +23,7 @@ struct Range
 class TriangleRasterizer
 {
 public:
-    TriangleRasterizer(const GridSpec &spec, std::vector<uint8_t> &marks, size_t &box_tests)
+    TriangleRasterizer(const GridSpec& spec, std::vector<uint8_t>& marks, size_t& box_tests)
         : spec_(spec), marks_(marks), box_tests_(box_tests)
     {
         // The closed test is inflated by a hair so that rounding never hides a contact: a missed
@@ -33,7 +31,7 @@ public:
         inflate_ = 1e-7 * spec.cell;
     }
 
-    void rasterize(const Vec3 &a, const Vec3 &b, const Vec3 &c)
+    void rasterize(const Vec3& a, const Vec3& b, const Vec3& c)
     {
         a_ = a;
         b_ = b;
@@ -50,7 +48,7 @@ public:
     }
 
 private:
-    bool touches(const Range &r, BoxContact contact)
+    bool touches(const Range& r, BoxContact contact)
     {
         ++box_tests_;
         Vec3 lo, hi;
@@ -68,7 +66,7 @@ private:
     // Octree-like descent: a block of cells the triangle misses is dropped whole, otherwise it is
     // halved along its longest axis. Large triangles thus cost about their cell footprint, not
     // their bounding box volume.
-    void descend(const Range &r)
+    void descend(const Range& r)
     {
         int axis = 0;
         for (int k = 1; k < 3; ++k)
@@ -78,7 +76,7 @@ private:
         {
             if (!touches(r, BoxContact::Closed))
                 return;
-            uint8_t &m = marks_[(static_cast<size_t>(r.lo[2]) * spec_.dims[1] + r.lo[1]) * spec_.dims[0] + r.lo[0]];
+            uint8_t& m = marks_[(static_cast<size_t>(r.lo[2]) * spec_.dims[1] + r.lo[1]) * spec_.dims[0] + r.lo[0]];
             m |= kTouched;
             if (!(m & kCrossed) && touches(r, BoxContact::Open))
                 m |= kCrossed;
@@ -94,9 +92,9 @@ private:
         descend(right);
     }
 
-    const GridSpec &spec_;
-    std::vector<uint8_t> &marks_;
-    size_t &box_tests_;
+    const GridSpec& spec_;
+    std::vector<uint8_t>& marks_;
+    size_t& box_tests_;
     double inflate_ = 0.0;
     Vec3 a_, b_, c_;
 };
@@ -104,13 +102,12 @@ private:
 // Empty cells the outside cannot reach through empty face neighbours. S is one closed surface per
 // component, so its complement has one unbounded region per component: a pocket enclosed by cells
 // is an artefact of coverage (nearby parts merged around a gap), never a real void.
-size_t fill_cavities(VoxelGrid &grid)
+size_t fill_cavities(VoxelGrid& grid)
 {
     const auto [nx, ny, nz] = grid.dims();
     std::vector<uint8_t> outside(grid.cell_count(), 0);
     std::vector<size_t> stack;
-    auto seed = [&](int i, int j, int k)
-    {
+    auto seed = [&](int i, int j, int k) {
         const size_t idx = grid.index(i, j, k);
         if (!outside[idx] && grid.cells()[idx] == Cell::Empty)
         {
@@ -154,19 +151,18 @@ size_t fill_cavities(VoxelGrid &grid)
 
 } // namespace
 
-VoxelGrid voxelize(const TriangleMesh &surface, const GridSpec &spec, const InsidePredicate &inside,
-                   VoxelizeStats *stats)
+VoxelGrid voxelize(const TriangleMesh& surface, const GridSpec& spec, const InsidePredicate& inside,
+                   VoxelizeStats* stats)
 {
     VoxelGrid grid(spec);
     VoxelizeStats st;
     std::vector<uint8_t> marks(grid.cell_count(), 0);
     TriangleRasterizer raster(spec, marks, st.box_tests);
-    for (const auto &t : surface.triangles)
+    for (const auto& t : surface.triangles)
         raster.rasterize(surface.positions[t[0]], surface.positions[t[1]], surface.positions[t[2]]);
 
     const auto [nx, ny, nz] = spec.dims;
-    auto query = [&](int i, int j, int k)
-    {
+    auto query = [&](int i, int j, int k) {
         ++st.inside_queries;
         return inside(grid.cell_centre(i, j, k));
     };
@@ -212,7 +208,7 @@ VoxelGrid voxelize(const TriangleMesh &surface, const GridSpec &spec, const Insi
                     const int ci = cur % nx, cj = (cur / nx) % ny, ck = cur / (nx * ny);
                     const int nb[6][3] = {{ci - 1, cj, ck}, {ci + 1, cj, ck}, {ci, cj - 1, ck},
                                           {ci, cj + 1, ck}, {ci, cj, ck - 1}, {ci, cj, ck + 1}};
-                    for (const auto &n : nb)
+                    for (const auto& n : nb)
                     {
                         if (!grid.contains(n[0], n[1], n[2]))
                             continue;

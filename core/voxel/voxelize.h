@@ -10,12 +10,11 @@
 #include "core/geom/triangle_mesh.h"
 #include "core/voxel/voxel_grid.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 //! Answers "is this point strictly inside S?". It is only asked about points at a distance of
 //! about half a cell or more from S, so any robust inside test (winding number, ray parity) works.
-using InsidePredicate = std::function<bool(const Vec3 &)>;
+using InsidePredicate = std::function<bool(const Vec3&)>;
 
 //! What voxelize() did, for statistics and tests.
 struct VoxelizeStats
@@ -33,7 +32,7 @@ struct VoxelizeStats
 //! S does not touch, plus one per cell that S only touches on its boundary. Finally, empty pockets
 //! enclosed by occupied cells (where coverage merged parts around a gap) are filled, so the
 //! boundary has one component per component of S.
-VoxelGrid voxelize(const TriangleMesh &surface, const GridSpec &spec, const InsidePredicate &inside,
-                   VoxelizeStats *stats = nullptr);
+VoxelGrid voxelize(const TriangleMesh& surface, const GridSpec& spec, const InsidePredicate& inside,
+                   VoxelizeStats* stats = nullptr);
 
 } // namespace zomeify

@@ -22,8 +22,8 @@ inline constexpr double kStrutThicknessMm = 6.0;
 //! The play left between two parts, in millimetres.
 inline constexpr double kClearanceMarginMm = 1.4;
 
-inline constexpr double kBallDiameterB0 = kBallDiameterMm / kMmPerB0;      //!< 0.382
-inline constexpr double kStrutThicknessB0 = kStrutThicknessMm / kMmPerB0;  //!< 0.130
+inline constexpr double kBallDiameterB0 = kBallDiameterMm / kMmPerB0;       //!< 0.382
+inline constexpr double kStrutThicknessB0 = kStrutThicknessMm / kMmPerB0;   //!< 0.130
 inline constexpr double kClearanceMarginB0 = kClearanceMarginMm / kMmPerB0; //!< 0.030
 
 //! Smallest allowed distance between two ball centres (b0): 0.412.

@@ -22,11 +22,11 @@ struct ModelTransform
 
 struct ZomeModel
 {
-    std::vector<ZVec> nodes;                          //!< exact ball centres
-    std::vector<std::array<uint32_t, 2>> struts;      //!< node index pairs
-    std::vector<std::vector<uint32_t>> faces;         //!< optional; counter-clockwise from outside
+    std::vector<ZVec> nodes;                     //!< exact ball centres
+    std::vector<std::array<uint32_t, 2>> struts; //!< node index pairs
+    std::vector<std::vector<uint32_t>> faces;    //!< optional; counter-clockwise from outside
     ModelTransform transform;
-    std::string stats_json = "{}";                    //!< free-form run statistics (a JSON object)
+    std::string stats_json = "{}"; //!< free-form run statistics (a JSON object)
 
     friend bool operator==(const ZomeModel&, const ZomeModel&) = default;
 };

@@ -35,10 +35,7 @@ int QPhi::sign() const
     return c2 > b2 ? sc : sb;
 }
 
-int compare(QPhi x, QPhi y)
-{
-    return (x - y).sign();
-}
+int compare(QPhi x, QPhi y) { return (x - y).sign(); }
 
 QPhi phi_power(int n)
 {
@@ -50,9 +47,6 @@ QPhi phi_power(int n)
     return r;
 }
 
-std::ostream& operator<<(std::ostream& os, QPhi q)
-{
-    return os << q.a << (q.b < 0 ? "" : "+") << q.b << "phi";
-}
+std::ostream& operator<<(std::ostream& os, QPhi q) { return os << q.a << (q.b < 0 ? "" : "+") << q.b << "phi"; }
 
 } // namespace zomeify

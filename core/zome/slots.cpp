@@ -125,9 +125,8 @@ const VectorIndex& vector_index() noexcept
 StrutKindInfo make_info(StrutKind k)
 {
     static constexpr std::string_view kNames[] = {"B0", "B1", "B2", "Y0", "Y1", "Y2", "R0", "R1", "R2"};
-    static constexpr std::string_view kCodes[] = {"PST-B0-BLU", "PST-B1-BLU", "PST-B2-BLU",
-                                                  "PST-Y0-YEL", "PST-Y1-YEL", "PST-Y2-YEL",
-                                                  "PST-R0-RED", "PST-R1-RED", "PST-R2-RED"};
+    static constexpr std::string_view kCodes[] = {"PST-B0-BLU", "PST-B1-BLU", "PST-B2-BLU", "PST-Y0-YEL", "PST-Y1-YEL",
+                                                  "PST-Y2-YEL", "PST-R0-RED", "PST-R1-RED", "PST-R2-RED"};
     // 4·length² of the size-0 strut: blue 4 (length 1), yellow 3 (√3/2), red 2 + φ (√(2+φ)/2).
     static constexpr QPhi kBase4[] = {{4, 0}, {3, 0}, {2, 1}};
     const Color color = kind_color(k);
@@ -165,19 +164,10 @@ const StrutKindInfo& kind_info(StrutKind k)
     return infos[static_cast<size_t>(k)];
 }
 
-const ZVec& zome_vector(int id) noexcept
-{
-    return vector_index().vectors[static_cast<size_t>(id)];
-}
+const ZVec& zome_vector(int id) noexcept { return vector_index().vectors[static_cast<size_t>(id)]; }
 
-const std::array<ZVec, kVectorCount>& zome_vectors() noexcept
-{
-    return vector_index().vectors;
-}
+const std::array<ZVec, kVectorCount>& zome_vectors() noexcept { return vector_index().vectors; }
 
-int vector_id_of(const ZVec& v) noexcept
-{
-    return vector_index().find(v);
-}
+int vector_id_of(const ZVec& v) noexcept { return vector_index().find(v); }
 
 } // namespace zomeify

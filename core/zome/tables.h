@@ -40,7 +40,8 @@ public:
 
     //! CHANGEDIRECTIONS(a, b): every pair of `group_of(a, b)` except (a, b) itself; empty when
     //! a + b = 0 or a = b. Visits them in a fixed order.
-    template <class Fn> void for_each_change(int a, int b, Fn&& fn) const
+    template <class Fn>
+    void for_each_change(int a, int b, Fn&& fn) const
     {
         if (a == b)
             return;
@@ -71,12 +72,12 @@ private:
         return {pairs_.data() + begin, end - begin};
     }
 
-    std::vector<VecPair> pairs_;         //!< all ordered pairs, grouped by sum
-    std::vector<uint32_t> group_start_;  //!< CSR offsets into pairs_
-    std::vector<int32_t> pair_group_;    //!< group of each ordered pair (a·186 + b)
-    std::vector<int16_t> merge_;         //!< MERGEVECTORS, −1 where a + b is no Zome vector
-    std::vector<int32_t> split_group_;   //!< group whose sum is vector v, or −1
-    int32_t zero_group_ = -1;            //!< the group of pairs summing to 0
+    std::vector<VecPair> pairs_;        //!< all ordered pairs, grouped by sum
+    std::vector<uint32_t> group_start_; //!< CSR offsets into pairs_
+    std::vector<int32_t> pair_group_;   //!< group of each ordered pair (a·186 + b)
+    std::vector<int16_t> merge_;        //!< MERGEVECTORS, −1 where a + b is no Zome vector
+    std::vector<int32_t> split_group_;  //!< group whose sum is vector v, or −1
+    int32_t zero_group_ = -1;           //!< the group of pairs summing to 0
 };
 
 } // namespace zomeify

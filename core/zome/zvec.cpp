@@ -39,20 +39,11 @@ ZVec ZVec::operator-(const ZVec& o) const
     return r;
 }
 
-ZVec ZVec::operator-() const
-{
-    return ZVec{} - *this;
-}
+ZVec ZVec::operator-() const { return ZVec{} - *this; }
 
-ZVec ZVec::times_phi() const
-{
-    return from_twice(twice(0).times_phi(), twice(1).times_phi(), twice(2).times_phi());
-}
+ZVec ZVec::times_phi() const { return from_twice(twice(0).times_phi(), twice(1).times_phi(), twice(2).times_phi()); }
 
-ZVec ZVec::div_phi() const
-{
-    return from_twice(twice(0).div_phi(), twice(1).div_phi(), twice(2).div_phi());
-}
+ZVec ZVec::div_phi() const { return from_twice(twice(0).div_phi(), twice(1).div_phi(), twice(2).div_phi()); }
 
 QPhi dot4(const ZVec& u, const ZVec& v)
 {
@@ -65,8 +56,8 @@ size_t ZVecHash::operator()(const ZVec& v) const noexcept
     uint64_t h = 0x9e3779b97f4a7c15ULL;
     for (int i = 0; i < 6; i += 2)
     {
-        const uint64_t w = (static_cast<uint64_t>(static_cast<uint32_t>(v.c[i])) << 32) |
-                           static_cast<uint32_t>(v.c[i + 1]);
+        const uint64_t w =
+            (static_cast<uint64_t>(static_cast<uint32_t>(v.c[i])) << 32) | static_cast<uint32_t>(v.c[i + 1]);
         h = mix64(h ^ w) + 0x9e3779b97f4a7c15ULL;
     }
     return static_cast<size_t>(h);

@@ -11,8 +11,8 @@
 #include "core/mesh/model_convert.h"
 #include "core/zome/clearance_rules.h"
 #include "tests/anneal/operators/operator_test_support.h"
-#include "tests/support/zome_fixtures.h"
 #include "tests/support/paths.h"
+#include "tests/support/zome_fixtures.h"
 
 namespace zomeify {
 namespace {
@@ -86,14 +86,17 @@ Vec3 point(const ZVec& p)
 int count_clashes(const ZomeMesh& mesh)
 {
     std::vector<ZVec> balls;
-    for (Vertex v : vertices(mesh)) balls.push_back(mesh.position(v));
+    for (Vertex v : vertices(mesh))
+        balls.push_back(mesh.position(v));
     std::vector<std::array<ZVec, 2>> struts;
-    for (Edge e : edges(mesh)) struts.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1))});
+    for (Edge e : edges(mesh))
+        struts.push_back({mesh.position(mesh.vertex(e, 0)), mesh.position(mesh.vertex(e, 1))});
     std::vector<std::vector<ZVec>> polygons;
     for (Face f : faces(mesh))
     {
         polygons.emplace_back();
-        for (Vertex v : face_vertices(mesh, f)) polygons.back().push_back(mesh.position(v));
+        for (Vertex v : face_vertices(mesh, f))
+            polygons.back().push_back(mesh.position(v));
     }
     int clashes = 0;
     for (size_t i = 0; i < balls.size(); ++i)
@@ -102,7 +105,8 @@ int count_clashes(const ZomeMesh& mesh)
     for (const ZVec& b : balls)
         for (const auto& s : struts)
             if (b != s[0] && b != s[1])
-                clashes += point_segment_distance_squared(point(b), point(s[0]), point(s[1])) < kMinBallStrut * kMinBallStrut;
+                clashes +=
+                    point_segment_distance_squared(point(b), point(s[0]), point(s[1])) < kMinBallStrut * kMinBallStrut;
     for (size_t i = 0; i < struts.size(); ++i)
         for (size_t j = i + 1; j < struts.size(); ++j)
         {

@@ -168,7 +168,8 @@ TEST(EnergyTerms, OrientationNormalPointsOutward)
     const double face_in = 4.0; // (1 − (−1))²
     EXPECT_NEAR(in.normal,
                 (24.0 * std::pow(1.0 + 1.0 / std::sqrt(3.0), 2) + 96.0 * std::pow(1.0 + 1.0 / std::sqrt(2.0), 2) +
-                 96.0 * face_in) / (4.0 * 216.0),
+                 96.0 * face_in) /
+                    (4.0 * 216.0),
                 1e-9);
     EXPECT_GT(in.normal, 0.5);
     // The tangential part does not see the orientation of faces.
@@ -214,9 +215,13 @@ TEST(EnergyTerms, QuantizationRoundsLikeLlround)
 {
     // The inline rounding must give llround's integer for every value, halves included, or
     // stored goldens and native/wasm determinism would break.
-    std::vector<double> values = {0.5 * kEnergyQuantum, 1.5 * kEnergyQuantum, 2.5 * kEnergyQuantum,
-                                  std::nextafter(0.5 * kEnergyQuantum, 0.0), 0x1p20 + 0.5 * kEnergyQuantum,
-                                  std::nextafter(kEnergySampleCap, 0.0), 1e-300};
+    std::vector<double> values = {0.5 * kEnergyQuantum,
+                                  1.5 * kEnergyQuantum,
+                                  2.5 * kEnergyQuantum,
+                                  std::nextafter(0.5 * kEnergyQuantum, 0.0),
+                                  0x1p20 + 0.5 * kEnergyQuantum,
+                                  std::nextafter(kEnergySampleCap, 0.0),
+                                  1e-300};
     uint64_t state = 12345;
     for (int i = 0; i < 100000; ++i)
     {

@@ -62,8 +62,10 @@ TEST(SurfaceContextCache, EverySampleEqualsTheUncachedOne)
         {
             const auto& [sum, divisor] = all[i];
             // Alternating contexts on one thread: each must see its own values, never the other's.
-            ASSERT_TRUE(same(a.context->sample(sum, divisor), uncached(*a.projector, inside_a, *a.context, sum, divisor)));
-            ASSERT_TRUE(same(b.context->sample(sum, divisor), uncached(*b.projector, inside_b, *b.context, sum, divisor)));
+            ASSERT_TRUE(
+                same(a.context->sample(sum, divisor), uncached(*a.projector, inside_a, *a.context, sum, divisor)));
+            ASSERT_TRUE(
+                same(b.context->sample(sum, divisor), uncached(*b.projector, inside_b, *b.context, sum, divisor)));
         }
         a.context->clear_cache();
     }
@@ -76,7 +78,8 @@ TEST(SurfaceContextCacheParallel, ThreadsSharingAContextGetExactValues)
     const InsideTest inside(*scene.projector);
     const auto all = samples(10);
     std::vector<SurfaceSample> expected;
-    for (const auto& [sum, divisor] : all) expected.push_back(uncached(*scene.projector, inside, *scene.context, sum, divisor));
+    for (const auto& [sum, divisor] : all)
+        expected.push_back(uncached(*scene.projector, inside, *scene.context, sum, divisor));
     constexpr int kThreads = 4;
     std::vector<int> wrong(kThreads, 0);
     std::vector<std::thread> threads;
@@ -86,8 +89,10 @@ TEST(SurfaceContextCacheParallel, ThreadsSharingAContextGetExactValues)
                 for (size_t i = static_cast<size_t>(t); i < all.size(); i += 3)
                     wrong[t] += same(scene.context->sample(all[i].first, all[i].second), expected[i]) ? 0 : 1;
         });
-    for (std::thread& th : threads) th.join();
-    for (int t = 0; t < kThreads; ++t) EXPECT_EQ(wrong[t], 0) << "thread " << t;
+    for (std::thread& th : threads)
+        th.join();
+    for (int t = 0; t < kThreads; ++t)
+        EXPECT_EQ(wrong[t], 0) << "thread " << t;
     EXPECT_GT(scene.context->cache_stats().hits, 0u); // the threads shared their projections
 }
 

@@ -30,7 +30,8 @@ Scene concentric_cube(double half, const Vec3& offset = Vec3::Zero())
 {
     Scene s;
     s.surface = test::make_cube(half, 4);
-    for (Vec3& p : s.surface.positions) p += Vec3::Constant(kHalf) + offset;
+    for (Vec3& p : s.surface.positions)
+        p += Vec3::Constant(kHalf) + offset;
     s.projector = std::make_unique<SurfaceProjector>(s.surface);
     s.context = std::make_unique<SurfaceContext>(*s.projector, ModelTransform{});
     return s;
@@ -52,7 +53,8 @@ TEST(SurfaceDistance, ASurfaceAKnownDepthInsideTheModelCostsThatDepthSquared)
     SurfaceDistance term(*s.context, surface_only());
     term.reset(from_model(fixtures::cube_shell(1)));
     ASSERT_GT(term.sample_count(), 100u);
-    for (size_t i = 0; i < term.sample_count(); ++i) EXPECT_NEAR(term.distance_squared(i), depth * depth, 1e-12);
+    for (size_t i = 0; i < term.sample_count(); ++i)
+        EXPECT_NEAR(term.distance_squared(i), depth * depth, 1e-12);
     const double mean = to_double(term.sum()) / static_cast<double>(term.sample_count());
     EXPECT_NEAR(mean, depth * depth, 1e-9);
 }

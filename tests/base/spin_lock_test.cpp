@@ -35,7 +35,8 @@ void expect_exclusive(int threads, int rounds)
             }
         });
     }
-    for (std::thread& th : pool) th.join();
+    for (std::thread& th : pool)
+        th.join();
     EXPECT_EQ(counter, static_cast<long>(threads) * rounds);
     EXPECT_EQ(a, b);
     EXPECT_FALSE(torn);

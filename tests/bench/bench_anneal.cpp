@@ -59,7 +59,9 @@ Scene bunny()
     o.resolution = kResolution;
     o.surface_probe = probe_of(*s.projector);
     o.target_genus = 0;
-    s.z0 = build_initial_model(s.surface, [&](const Vec3& p) { return inside.is_inside(p); }, o).model;
+    s.z0 = build_initial_model(
+               s.surface, [&](const Vec3& p) { return inside.is_inside(p); }, o)
+               .model;
     return s;
 }
 
@@ -67,8 +69,8 @@ double cpu_seconds() { return static_cast<double>(std::clock()) / CLOCKS_PER_SEC
 
 nlohmann::json terms(const EnergyTerms& t)
 {
-    return {{"total", t.total}, {"distance", t.distance}, {"orientation", t.orientation}, {"fairing", t.fairing},
-            {"complexity", t.complexity}, {"nodes", t.sums.nodes}};
+    return {{"total", t.total},     {"distance", t.distance},     {"orientation", t.orientation},
+            {"fairing", t.fairing}, {"complexity", t.complexity}, {"nodes", t.sums.nodes}};
 }
 
 nlohmann::json throughput(const Scene& s, double seconds)
@@ -147,7 +149,9 @@ nlohmann::json compare(const Scene& s, double seconds, int rounds)
         pairs.push_back({{"defaults_per_cpu_second", now}, {"paper_per_cpu_second", paper}, {"ratio", ratios.back()}});
     }
     std::sort(ratios.begin(), ratios.end());
-    return {{"pairs", pairs}, {"median_ratio", ratios[ratios.size() / 2]}, {"min_ratio", ratios.front()},
+    return {{"pairs", pairs},
+            {"median_ratio", ratios[ratios.size() / 2]},
+            {"min_ratio", ratios.front()},
             {"max_ratio", ratios.back()}};
 }
 
@@ -202,8 +206,7 @@ nlohmann::json seeding(const Scene& s, uint64_t proposals, int seeds)
             values.push_back(r.end.total);
         }
         std::sort(values.begin(), values.end());
-        out[sweep ? "sweeping_slabs" : "uniform"] = {{"energies", energies},
-                                                     {"median", values[values.size() / 2]}};
+        out[sweep ? "sweeping_slabs" : "uniform"] = {{"energies", energies}, {"median", values[values.size() / 2]}};
     }
     out["proposals"] = proposals;
     return out;
@@ -252,9 +255,10 @@ static int run_bench(int argc, char** argv)
     else
     {
         // `bench_anneal throughput [SECONDS]` or `bench_anneal SECONDS`; anything else is an error.
-        const double seconds = mode == "throughput"
-                                   ? (argc > 2 ? bench::positive_argument(argv[2], "SECONDS") : 5.0)
-                                   : bench::positive_argument(argv[1], "the mode (throughput, compare, quality, seeding) or SECONDS");
+        const double seconds =
+            mode == "throughput"
+                ? (argc > 2 ? bench::positive_argument(argv[2], "SECONDS") : 5.0)
+                : bench::positive_argument(argv[1], "the mode (throughput, compare, quality, seeding) or SECONDS");
         j["mode"] = "throughput";
         j["seconds_per_run"] = seconds;
         j["runs"] = throughput(s, seconds > 0 ? seconds : 5.0);

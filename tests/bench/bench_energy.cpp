@@ -39,7 +39,8 @@ InitialModel z0_near(const TriangleMesh& surface, const InsideTest& inside, size
     {
         InitialModelOptions options;
         options.resolution = resolution;
-        InitialModel z0 = build_initial_model(surface, [&](const Vec3& p) { return inside.is_inside(p); }, options);
+        InitialModel z0 = build_initial_model(
+            surface, [&](const Vec3& p) { return inside.is_inside(p); }, options);
         if (!z0.report.valid)
         {
             continue;
@@ -171,8 +172,12 @@ static int run_bench(int argc, char** argv)
         {"nodes", mesh.n_vertices()},
         {"struts", mesh.n_edges()},
         {"faces", mesh.n_faces()},
-        {"energy", {{"total", terms.total}, {"distance", terms.distance}, {"orientation", terms.orientation},
-                    {"fairing", terms.fairing}, {"complexity", terms.complexity}}},
+        {"energy",
+         {{"total", terms.total},
+          {"distance", terms.distance},
+          {"orientation", terms.orientation},
+          {"fairing", terms.fairing},
+          {"complexity", terms.complexity}}},
         {"proposals", all.size()},
         {"mean_removed_elements", removed / static_cast<double>(all.size())},
         {"mean_added_elements", added / static_cast<double>(all.size())},

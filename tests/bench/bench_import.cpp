@@ -17,22 +17,21 @@
 
 using namespace zomeify;
 
-namespace
-{
+namespace {
 
 const std::string meshes_dir = std::string(ZOME_SHARED_DIR) + "/data/meshes/";
 
 std::vector<std::string> all_shared_meshes()
 {
     std::vector<std::string> names;
-    for (const auto &entry : std::filesystem::directory_iterator(meshes_dir))
+    for (const auto& entry : std::filesystem::directory_iterator(meshes_dir))
         if (is_mesh_file_name(entry.path().filename().string()))
             names.push_back(entry.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
 
-nlohmann::json bench_mesh(const std::string &name, int runs)
+nlohmann::json bench_mesh(const std::string& name, int runs)
 {
     const std::string path = meshes_dir + name;
     PolygonSoup soup;
@@ -40,7 +39,8 @@ nlohmann::json bench_mesh(const std::string &name, int runs)
     SurfaceReport report;
     const double diagnose_s = bench::median_seconds(runs, [&] { report = diagnose(soup); });
     size_t triangles = 0;
-    const double prepare_s = bench::median_seconds(runs, [&] { triangles = prepare_surface(soup).mesh.triangles.size(); });
+    const double prepare_s =
+        bench::median_seconds(runs, [&] { triangles = prepare_surface(soup).mesh.triangles.size(); });
     return {
         {"mesh", name},
         {"file_bytes", std::filesystem::file_size(path)},
@@ -74,7 +74,7 @@ static int run_bench(int argc, char** argv)
     if (names.empty())
         names = all_shared_meshes();
     nlohmann::json meshes = nlohmann::json::array();
-    for (const std::string &name : names)
+    for (const std::string& name : names)
         meshes.push_back(bench_mesh(name, runs));
     const nlohmann::json out = {
         {"bench", "import"},

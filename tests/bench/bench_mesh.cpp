@@ -11,8 +11,8 @@
 #include "core/mesh/element_ranges.h"
 #include "core/mesh/model_convert.h"
 #include "core/mesh/star.h"
-#include "core/zome/slots.h"
 #include "core/mesh/validate.h"
+#include "core/zome/slots.h"
 #include "tests/support/zome_fixtures.h"
 
 using namespace zomeify;
@@ -21,10 +21,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double seconds_since(Clock::time_point t0)
-{
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 #define BENCH_CHECK(cond)                                                                                              \
     do                                                                                                                 \
@@ -62,8 +59,8 @@ int main()
         for (int k = 0; k < rounds; ++k)
             for (Vertex v : vertices(mesh))
                 for (Halfedge h : outgoing_halfedges(mesh, v))
-                    checksum += static_cast<uint64_t>(mesh.slot(h))
-                        + static_cast<uint64_t>(mesh.position(mesh.to_vertex(h)).c[0]);
+                    checksum += static_cast<uint64_t>(mesh.slot(h)) +
+                                static_cast<uint64_t>(mesh.position(mesh.to_vertex(h)).c[0]);
         ring_ns = std::min(ring_ns, seconds_since(t0) * 1e9 / (rounds * static_cast<double>(mesh.n_vertices())));
         t0 = Clock::now();
         found = 0;
@@ -87,7 +84,8 @@ int main()
     BENCH_CHECK(link_total > 0u);
 
     // Diagonal add + remove on the rhombohedral lattice (every face diagonal is a strut).
-    ZomeMesh rh = from_model(fixtures::voxel_surface(fixtures::block_cells(12, 12, 12), fixtures::rhombohedral_basis()));
+    ZomeMesh rh =
+        from_model(fixtures::voxel_surface(fixtures::block_cells(12, 12, 12), fixtures::rhombohedral_basis()));
     std::mt19937 rng(5);
     // remove_edge keeps the lower-index face, so the original faces stay live throughout.
     const size_t n_quads = rh.faces_size();
@@ -134,7 +132,8 @@ int main()
 
     std::printf("{\"bench\":\"mesh\",\"nodes\":%zu,\"from_model_ms\":%.2f,\"validate_ms\":%.2f,"
                 "\"one_ring_ns\":%.1f,\"position_lookup_ns\":%.1f,\"vertex_link_ns\":%.1f,"
-                "\"diagonal_split_merge_ns\":%.1f,\"face_remove_add_ns\":%.1f,\"gc_ms\":%.2f,\"gc_nodes\":%zu,\"gc_edges_before\":%zu,\"pairs\":%zu}\n",
+                "\"diagonal_split_merge_ns\":%.1f,\"face_remove_add_ns\":%.1f,\"gc_ms\":%.2f,\"gc_nodes\":%zu,\"gc_"
+                "edges_before\":%zu,\"pairs\":%zu}\n",
                 mesh.n_vertices(), build_s * 1e3, validate_s * 1e3, ring_ns, lookup_ns, link_ns, diag_ns, refill_ns,
                 gc_s * 1e3, rh.n_vertices(), grown_edges, pairs);
     return 0;

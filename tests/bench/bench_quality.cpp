@@ -18,13 +18,12 @@
 
 using namespace zomeify;
 
-namespace
-{
+namespace {
 
 // Resolutions at which Z0 keeps the genus of the shape (README: the Z0 outcome table).
 const std::map<std::string, int> resolutions = {{"bunny.obj", 8}, {"fertility.obj", 16}, {"rockerarm.obj", 12}};
 
-nlohmann::json curve(const std::string &name, double seconds, int threads)
+nlohmann::json curve(const std::string& name, double seconds, int threads)
 {
     const TriangleMesh surface = load_surface(std::string(ZOME_SHARED_DIR) + "/data/meshes/" + name);
     const SurfaceProjector projector(surface);
@@ -33,8 +32,9 @@ nlohmann::json curve(const std::string &name, double seconds, int threads)
     const auto it = resolutions.find(name);
     initial.resolution = it == resolutions.end() ? 12 : it->second;
     initial.surface_probe = probe_of(projector);
-    const ZomeModel z0 =
-        build_initial_model(surface, [&](const Vec3 &p) { return inside.is_inside(p); }, initial).model;
+    const ZomeModel z0 = build_initial_model(
+                             surface, [&](const Vec3& p) { return inside.is_inside(p); }, initial)
+                             .model;
 
     const SurfaceContext context(projector, z0.transform);
     AnnealOptions options;
@@ -45,8 +45,9 @@ nlohmann::json curve(const std::string &name, double seconds, int threads)
     Annealer annealer(z0, context, options);
     // The curve starts at the Z0's energy; the first progress sample comes one interval later.
     nlohmann::json points = nlohmann::json::array({nlohmann::json::array({0.0, annealer.start_energy().total})});
-    const AnnealResult result = annealer.run(
-        [&](const AnnealProgress &p) { points.push_back({p.elapsed_seconds, p.energy.total}); });
+    const AnnealResult result = annealer.run([&](const AnnealProgress& p) {
+        points.push_back({p.elapsed_seconds, p.energy.total});
+    });
     return {
         {"mesh", name},
         {"resolution", initial.resolution},
@@ -82,7 +83,7 @@ static int run_bench(int argc, char** argv)
     if (names.empty())
         names = {"bunny.obj", "fertility.obj", "rockerarm.obj"};
     nlohmann::json curves = nlohmann::json::array();
-    for (const std::string &name : names)
+    for (const std::string& name : names)
         curves.push_back(curve(name, seconds > 0 ? seconds : 20.0, threads));
     const nlohmann::json out = {
         {"bench", "quality"},

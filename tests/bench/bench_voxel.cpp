@@ -32,7 +32,7 @@ static int run_bench(int argc, char** argv)
     const SurfaceProjector projector(mesh);
     const InsideTest inside(projector);
     const double setup = setup_clock.seconds();
-    const InsidePredicate is_inside = [&](const Vec3 &p) { return inside.is_inside(p); };
+    const InsidePredicate is_inside = [&](const Vec3& p) { return inside.is_inside(p); };
 
     InitialModelOptions options;
     options.resolution = resolution;
@@ -45,12 +45,10 @@ static int run_bench(int argc, char** argv)
     VoxelGrid grid;
     const double t_voxelize = bench::median_seconds(kRuns, [&] { grid = voxelize(mesh, spec, is_inside); });
     VoxelGrid cleaned;
-    const double t_repair = bench::median_seconds(kRuns,
-                                                  [&]
-                                                  {
-                                                      cleaned = grid;
-                                                      repair_manifold(cleaned);
-                                                  });
+    const double t_repair = bench::median_seconds(kRuns, [&] {
+        cleaned = grid;
+        repair_manifold(cleaned);
+    });
     const double t_extract = bench::median_seconds(kRuns, [&] { extract_boundary(cleaned); });
 
     nlohmann::json j;

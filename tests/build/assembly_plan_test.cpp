@@ -114,7 +114,8 @@ TEST(AssemblyPlan, PaperBunnyBothOrders)
 TEST(AssemblyPlan, SharedMeshesInitialModels)
 {
     ZOME_REQUIRE_SHARED();
-    const char* meshes[] = {"3holes", "bunny", "cube", "eight", "elk", "fertility", "rockerarm", "scorpion", "sphere", "torus"};
+    const char* meshes[] = {"3holes",    "bunny",     "cube",     "eight",  "elk",
+                            "fertility", "rockerarm", "scorpion", "sphere", "torus"};
     for (const char* name : meshes)
     {
         const std::string path = test::shared_path(std::string("data/meshes/") + name + ".obj");

@@ -7,20 +7,18 @@
 #include "core/surface/read_mesh.h"
 #include "tests/fuzz/fuzz_target.h"
 
-namespace zomeify::fuzz
-{
+namespace zomeify::fuzz {
 
-namespace
-{
+namespace {
 
 // Above this the repair path costs more per execution than it is worth: the readers are the target,
 // and a soup this size already reaches every branch of weld, triangulate and the topology analysis.
 constexpr size_t max_repaired_elements = 4096;
 
-void repair(const PolygonSoup &soup)
+void repair(const PolygonSoup& soup)
 {
     size_t corners = 0;
-    for (const auto &polygon : soup.polygons)
+    for (const auto& polygon : soup.polygons)
         corners += polygon.size();
     if (soup.positions.size() > max_repaired_elements || corners > 4 * max_repaired_elements)
         return;
@@ -32,13 +30,14 @@ void repair(const PolygonSoup &soup)
     {
         const PreparedSurface prepared = prepare_surface(soup);
         ZOME_FUZZ_CHECK(report.ok(), "prepare_surface accepts only what diagnose accepts");
-        ZOME_FUZZ_CHECK(prepared.report.closed && prepared.report.manifold, "a prepared surface is closed and manifold");
+        ZOME_FUZZ_CHECK(prepared.report.closed && prepared.report.manifold,
+                        "a prepared surface is closed and manifold");
         const size_t vertices = prepared.mesh.positions.size();
-        for (const auto &triangle : prepared.mesh.triangles)
+        for (const auto& triangle : prepared.mesh.triangles)
             for (uint32_t v : triangle)
                 ZOME_FUZZ_CHECK(v < vertices, "prepared triangles index existing vertices");
     }
-    catch (const InvalidInputError &)
+    catch (const InvalidInputError&)
     {
         ZOME_FUZZ_CHECK(!report.ok(), "prepare_surface refuses only what diagnose refuses");
     }
@@ -46,14 +45,14 @@ void repair(const PolygonSoup &soup)
 
 } // namespace
 
-int fuzz_mesh_input(const uint8_t *data, size_t size, const char *file_name)
+int fuzz_mesh_input(const uint8_t* data, size_t size, const char* file_name)
 {
     PolygonSoup soup;
     try
     {
         soup = read_mesh_buffer(std::span<const uint8_t>(data, size), file_name);
     }
-    catch (const InvalidInputError &)
+    catch (const InvalidInputError&)
     {
         return 0;
     }

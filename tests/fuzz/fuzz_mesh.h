@@ -6,11 +6,10 @@
 #include <cstddef>
 #include <cstdint>
 
-namespace zomeify::fuzz
-{
+namespace zomeify::fuzz {
 
 //! Reads `data` as a file called `file_name` (which picks the format). Only the core's documented
 //! errors may escape the readers; they are caught here, anything else is a finding.
-int fuzz_mesh_input(const uint8_t *data, size_t size, const char *file_name);
+int fuzz_mesh_input(const uint8_t* data, size_t size, const char* file_name);
 
 } // namespace zomeify::fuzz

@@ -12,24 +12,23 @@
 #include <cstdio>
 #include <cstdlib>
 
-namespace zomeify::fuzz
-{
+namespace zomeify::fuzz {
 
-using TargetFn = int (*)(const uint8_t *data, size_t size);
+using TargetFn = int (*)(const uint8_t* data, size_t size);
 
 //! Adds a target to the replay program's table; returns true so it can initialise a static.
-bool register_target(const char *name, TargetFn fn);
+bool register_target(const char* name, TargetFn fn);
 
 } // namespace zomeify::fuzz
 
 #ifdef ZOME_FUZZ_LIBFUZZER
-#define ZOME_FUZZ_TARGET(name) extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+#define ZOME_FUZZ_TARGET(name) extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
 #else
 #define ZOME_FUZZ_TARGET(name)                                                                                         \
-    static int fuzz_body_##name(const uint8_t *data, size_t size);                                                     \
+    static int fuzz_body_##name(const uint8_t* data, size_t size);                                                     \
     [[maybe_unused]] static const bool fuzz_registered_##name =                                                        \
-        zomeify::fuzz::register_target(#name, fuzz_body_##name);                                                      \
-    static int fuzz_body_##name(const uint8_t *data, size_t size)
+        zomeify::fuzz::register_target(#name, fuzz_body_##name);                                                       \
+    static int fuzz_body_##name(const uint8_t* data, size_t size)
 #endif
 
 //! An invariant the code under test promises; a violation is a finding.

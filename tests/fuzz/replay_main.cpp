@@ -13,31 +13,29 @@
 
 #include "tests/fuzz/fuzz_target.h"
 
-namespace zomeify::fuzz
-{
+namespace zomeify::fuzz {
 
-namespace
-{
+namespace {
 
-std::map<std::string, TargetFn> &targets()
+std::map<std::string, TargetFn>& targets()
 {
     static std::map<std::string, TargetFn> table;
     return table;
 }
 
-std::vector<uint8_t> file_bytes(const std::filesystem::path &path)
+std::vector<uint8_t> file_bytes(const std::filesystem::path& path)
 {
     std::ifstream in(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
 // Sorted so a failure names the same first file on every run.
-std::vector<std::filesystem::path> files_in(const std::filesystem::path &path)
+std::vector<std::filesystem::path> files_in(const std::filesystem::path& path)
 {
     std::vector<std::filesystem::path> files;
     if (std::filesystem::is_directory(path))
     {
-        for (const auto &entry : std::filesystem::directory_iterator(path))
+        for (const auto& entry : std::filesystem::directory_iterator(path))
             if (entry.is_regular_file() && entry.path().filename().string().front() != '.')
                 files.push_back(entry.path());
     }
@@ -47,10 +45,10 @@ std::vector<std::filesystem::path> files_in(const std::filesystem::path &path)
     return files;
 }
 
-size_t replay(const std::string &name, TargetFn fn, const std::filesystem::path &path)
+size_t replay(const std::string& name, TargetFn fn, const std::filesystem::path& path)
 {
     size_t count = 0;
-    for (const auto &file : files_in(path))
+    for (const auto& file : files_in(path))
     {
         const std::vector<uint8_t> bytes = file_bytes(file);
         std::fprintf(stderr, "%s %s\n", name.c_str(), file.string().c_str()); // names the culprit of a crash
@@ -62,7 +60,7 @@ size_t replay(const std::string &name, TargetFn fn, const std::filesystem::path 
 
 } // namespace
 
-bool register_target(const char *name, TargetFn fn)
+bool register_target(const char* name, TargetFn fn)
 {
     targets()[name] = fn;
     return true;
@@ -70,7 +68,7 @@ bool register_target(const char *name, TargetFn fn)
 
 } // namespace zomeify::fuzz
 
-int main(int argc, char **argv)
+int main(int argc, char** argv)
 {
     using namespace zomeify::fuzz;
     std::vector<std::string> args(argv + 1, argv + argc);
@@ -92,14 +90,14 @@ int main(int argc, char **argv)
     }
     else
     {
-        for (const std::string &root : args)
+        for (const std::string& root : args)
         {
             if (!std::filesystem::is_directory(root))
             {
                 std::fprintf(stderr, "fuzz_replay: '%s' is not a folder\n", root.c_str());
                 return 2;
             }
-            for (const auto &[name, fn] : targets())
+            for (const auto& [name, fn] : targets())
                 if (std::filesystem::is_directory(std::filesystem::path(root) / name))
                     inputs += replay(name, fn, std::filesystem::path(root) / name);
         }

@@ -54,13 +54,13 @@ double reference_segment_distance_squared(const Vec3& p0, const Vec3& p1, const 
 TEST(GeomClearance, PointSegmentExactAnswers)
 {
     const Vec3 a(-1, 0, 0), b(1, 0, 0);
-    EXPECT_EQ(point_segment_distance_squared(Vec3(0, 1, 0), a, b), 1.0);    // above the middle
-    EXPECT_EQ(point_segment_distance_squared(Vec3(0.5, 0, 0), a, b), 0.0);  // on the segment
-    EXPECT_EQ(point_segment_distance_squared(Vec3(3, 0, 0), a, b), 4.0);    // beyond an end, collinear
-    EXPECT_EQ(point_segment_distance_squared(Vec3(-2, 2, 0), a, b), 5.0);   // beyond the other end
-    EXPECT_EQ(point_segment_distance_squared(Vec3(1, 0, 0), a, b), 0.0);    // at an end
+    EXPECT_EQ(point_segment_distance_squared(Vec3(0, 1, 0), a, b), 1.0);   // above the middle
+    EXPECT_EQ(point_segment_distance_squared(Vec3(0.5, 0, 0), a, b), 0.0); // on the segment
+    EXPECT_EQ(point_segment_distance_squared(Vec3(3, 0, 0), a, b), 4.0);   // beyond an end, collinear
+    EXPECT_EQ(point_segment_distance_squared(Vec3(-2, 2, 0), a, b), 5.0);  // beyond the other end
+    EXPECT_EQ(point_segment_distance_squared(Vec3(1, 0, 0), a, b), 0.0);   // at an end
     const Vec3 c(1, 2, 3);
-    EXPECT_EQ(point_segment_distance_squared(Vec3(1, 2, 5), c, c), 4.0);    // zero-length segment
+    EXPECT_EQ(point_segment_distance_squared(Vec3(1, 2, 5), c, c), 4.0); // zero-length segment
 }
 
 TEST(GeomClearance, SegmentSegmentExactAnswers)
@@ -146,7 +146,8 @@ TEST(GeomClearance, ArgumentOrderGivesBitIdenticalResults)
     std::mt19937 rng(5);
     for (int i = 0; i < 2000; ++i)
     {
-        const Vec3 p0 = random_vec(rng, 10), p1 = random_vec(rng, 10), q0 = random_vec(rng, 10), q1 = random_vec(rng, 10);
+        const Vec3 p0 = random_vec(rng, 10), p1 = random_vec(rng, 10), q0 = random_vec(rng, 10),
+                   q1 = random_vec(rng, 10);
         const double d = segment_segment_distance_squared(p0, p1, q0, q1);
         EXPECT_EQ(d, segment_segment_distance_squared(p1, p0, q0, q1));
         EXPECT_EQ(d, segment_segment_distance_squared(p0, p1, q1, q0));
@@ -168,24 +169,24 @@ TEST(GeomClearance, SegmentTriangleExactCases)
 {
     const Vec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
     const auto hits = [&](Vec3 p, Vec3 q) { return segment_intersects_triangle(p, q, a, b, c); };
-    EXPECT_TRUE(hits({0.5, 0.5, -1}, {0.5, 0.5, 1}));     // through the interior
-    EXPECT_FALSE(hits({3, 3, -1}, {3, 3, 1}));            // beside it
-    EXPECT_FALSE(hits({0.5, 0.5, 0.5}, {0.5, 0.5, 1}));   // above it, pointing at it
-    EXPECT_TRUE(hits({0.5, 0.5, 0}, {0.5, 0.5, 1}));      // an end on the face
-    EXPECT_FALSE(hits({0.5, 0.5, 1e-6}, {0.5, 0.5, 1}));  // an end just above it
-    EXPECT_TRUE(hits({1, 0, -1}, {1, 0, 1}));             // through an edge
-    EXPECT_TRUE(hits({1, 1, -1}, {1, 1, 1}));             // through the long edge's middle
-    EXPECT_FALSE(hits({1 + 1e-9, 1, -1}, {1 + 1e-9, 1, 1}));  // just outside it
-    EXPECT_TRUE(hits({0, 0, -1}, {0, 0, 1}));             // through a corner
-    EXPECT_TRUE(hits({2, 0, 0}, {3, 0, 5}));              // an end on a corner
-    EXPECT_TRUE(hits({-1, 1, 1}, {1, -1, -1}));           // slanted, through a corner
-    EXPECT_FALSE(hits({-1, -1, 1}, {3, 3, 1}));           // parallel to the plane, above
+    EXPECT_TRUE(hits({0.5, 0.5, -1}, {0.5, 0.5, 1}));        // through the interior
+    EXPECT_FALSE(hits({3, 3, -1}, {3, 3, 1}));               // beside it
+    EXPECT_FALSE(hits({0.5, 0.5, 0.5}, {0.5, 0.5, 1}));      // above it, pointing at it
+    EXPECT_TRUE(hits({0.5, 0.5, 0}, {0.5, 0.5, 1}));         // an end on the face
+    EXPECT_FALSE(hits({0.5, 0.5, 1e-6}, {0.5, 0.5, 1}));     // an end just above it
+    EXPECT_TRUE(hits({1, 0, -1}, {1, 0, 1}));                // through an edge
+    EXPECT_TRUE(hits({1, 1, -1}, {1, 1, 1}));                // through the long edge's middle
+    EXPECT_FALSE(hits({1 + 1e-9, 1, -1}, {1 + 1e-9, 1, 1})); // just outside it
+    EXPECT_TRUE(hits({0, 0, -1}, {0, 0, 1}));                // through a corner
+    EXPECT_TRUE(hits({2, 0, 0}, {3, 0, 5}));                 // an end on a corner
+    EXPECT_TRUE(hits({-1, 1, 1}, {1, -1, -1}));              // slanted, through a corner
+    EXPECT_FALSE(hits({-1, -1, 1}, {3, 3, 1}));              // parallel to the plane, above
     // Coplanar: across, wholly inside, along an edge, through a corner only, apart, collinear beyond.
     EXPECT_TRUE(hits({-1, 0.5, 0}, {3, 0.5, 0}));
     EXPECT_TRUE(hits({0.2, 0.2, 0}, {0.5, 0.5, 0}));
     EXPECT_TRUE(hits({-1, 0, 0}, {3, 0, 0}));
-    EXPECT_TRUE(hits({3, -1, 0}, {1, 1, 0}));   // ends on the long edge
-    EXPECT_TRUE(hits({2, 0, 0}, {3, -1, 0}));   // touches a corner from outside
+    EXPECT_TRUE(hits({3, -1, 0}, {1, 1, 0})); // ends on the long edge
+    EXPECT_TRUE(hits({2, 0, 0}, {3, -1, 0})); // touches a corner from outside
     EXPECT_FALSE(hits({-1, 3, 0}, {3, 3, 0}));
     EXPECT_FALSE(hits({3, 0, 0}, {4, 0, 0}));
     // Zero-length segments: a point on and off the triangle.
@@ -289,8 +290,8 @@ TEST(GeomClearance, RulesUseTheMinimaOfClearanceRules)
     EXPECT_TRUE(struts_clash(s0, s1, Vec3(0, -1, kMinStrutStrut - 1e-9), Vec3(0, 1, kMinStrutStrut - 1e-9)));
     EXPECT_FALSE(struts_clash(s0, s1, Vec3(0, -1, kMinStrutStrut + 1e-9), Vec3(0, 1, kMinStrutStrut + 1e-9)));
     // A quad as its two canonical triangles; a strut through the shared diagonal meets it.
-    const std::array<std::array<Vec3, 3>, 2> quad{{{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)},
-                                                   {Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}}};
+    const std::array<std::array<Vec3, 3>, 2> quad{
+        {{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0)}, {Vec3(0, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)}}};
     EXPECT_TRUE(strut_face_clash(Vec3(0.5, 0.5, -1), Vec3(0.5, 0.5, 1), quad));
     EXPECT_TRUE(strut_face_clash(Vec3(0.2, 0.7, -1), Vec3(0.2, 0.7, 1), quad));
     EXPECT_FALSE(strut_face_clash(Vec3(1.2, 0.7, -1), Vec3(1.2, 0.7, 1), quad));

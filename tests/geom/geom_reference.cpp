@@ -47,15 +47,15 @@ bool ray_hits(const Vec3& o, const Vec3& d, const Vec3& a, const Vec3& b, const 
 
 double reference_triangle_distance_squared(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c)
 {
-    double best = std::min({segment_distance_squared(p, a, b), segment_distance_squared(p, b, c),
-                                 segment_distance_squared(p, c, a)});
+    double best = std::min(
+        {segment_distance_squared(p, a, b), segment_distance_squared(p, b, c), segment_distance_squared(p, c, a)});
     const Vec3 n = (b - a).cross(c - a);
     const double n2 = n.squaredNorm();
     if (n2 > 0)
     {
         const Vec3 q = p - ((p - a).dot(n) / n2) * n;
-        const bool inside = (b - a).cross(q - a).dot(n) >= 0 && (c - b).cross(q - b).dot(n) >= 0 &&
-                            (a - c).cross(q - c).dot(n) >= 0;
+        const bool inside =
+            (b - a).cross(q - a).dot(n) >= 0 && (c - b).cross(q - b).dot(n) >= 0 && (a - c).cross(q - c).dot(n) >= 0;
         if (inside)
         {
             best = std::min(best, (p - q).squaredNorm());
@@ -162,13 +162,10 @@ double signed_volume(const TriangleMesh& mesh)
 
 std::vector<std::string> shared_mesh_names()
 {
-    return {"3holes.obj", "bunny.obj", "cube.obj",      "eight.obj",  "elk.obj",
+    return {"3holes.obj",    "bunny.obj",     "cube.obj",     "eight.obj",  "elk.obj",
             "fertility.obj", "rockerarm.obj", "scorpion.obj", "sphere.obj", "torus.obj"};
 }
 
-std::string shared_mesh_path(const std::string& name)
-{
-    return std::string(ZOME_SHARED_DIR) + "/data/meshes/" + name;
-}
+std::string shared_mesh_path(const std::string& name) { return std::string(ZOME_SHARED_DIR) + "/data/meshes/" + name; }
 
 } // namespace zomeify::test

@@ -32,7 +32,12 @@ struct BitHash
         for (int i = 0; i < 8; ++i)
             h = (h ^ ((b >> (8 * i)) & 0xff)) * 1099511628211ull;
     }
-    void add(const Vec3& v) { add(v.x()); add(v.y()); add(v.z()); }
+    void add(const Vec3& v)
+    {
+        add(v.x());
+        add(v.y());
+        add(v.z());
+    }
 };
 
 TEST(GeomPlatformBits, TorusStagesAreTheSameBitsOnEveryPlatform)
@@ -51,7 +56,11 @@ TEST(GeomPlatformBits, TorusStagesAreTheSameBitsOnEveryPlatform)
         faces.add(n);
     BitHash answers, dists, points;
     Vec3 lo = mesh.positions[0], hi = lo;
-    for (const Vec3& v : mesh.positions) { lo = lo.cwiseMin(v); hi = hi.cwiseMax(v); }
+    for (const Vec3& v : mesh.positions)
+    {
+        lo = lo.cwiseMin(v);
+        hi = hi.cwiseMax(v);
+    }
     for (int i = 0; i <= 20; ++i)
         for (int j = 0; j <= 20; ++j)
             for (int k = 0; k <= 20; ++k)

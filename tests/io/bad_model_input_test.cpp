@@ -70,23 +70,23 @@ TEST(BadModelInput, JsonProblemsAreNamed)
     EXPECT_NE(error_of(head + R"("nodes":[[0,0,0,0,0,0],[2,0,0,0,0,0]],"struts":[[0,5]]})", "a.zome.json")
                   .find("does not exist"),
               std::string::npos);
-    EXPECT_NE(error_of(head + R"("nodes":[[0,0,0,0,0,0],[0,0,0,0,0,0]],"struts":[]})", "a.zome.json")
-                  .find("same position"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(head + R"("nodes":[[0,0,0,0,0,0],[0,0,0,0,0,0]],"struts":[]})", "a.zome.json").find("same position"),
+        std::string::npos);
     EXPECT_NE(error_of(head + R"("nodes":[[0,0,0,0,0,1e300]],"struts":[]})", "a.zome.json").find("integer"),
               std::string::npos);
     EXPECT_NE(error_of(head + R"("nodes":[[0,0,0,0,0,99999999999]],"struts":[]})", "a.zome.json").find("range"),
               std::string::npos);
     EXPECT_NE(error_of(head + R"("nodes":[[0,0,0,0,0]],"struts":[]})", "a.zome.json").find("6 integers"),
               std::string::npos);
-    EXPECT_NE(error_of(R"({"format":"zomeify-model","version":99,"nodes":[],"struts":[]})", "a.zome.json")
-                  .find("version 99"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(R"({"format":"zomeify-model","version":99,"nodes":[],"struts":[]})", "a.zome.json").find("version 99"),
+        std::string::npos);
     // Two struts in one slot of a ball: 0→1 and 0→2 both along +x (b1 and b0... same slot).
-    EXPECT_NE(error_of(head + R"("nodes":[[0,0,0,0,0,0],[2,0,0,0,0,0],[0,2,0,0,0,0]],"struts":[[0,1],[0,2]]})",
-                       "a.zome.json")
-                  .find("ball hole"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(head + R"("nodes":[[0,0,0,0,0,0],[2,0,0,0,0,0],[0,2,0,0,0,0]],"struts":[[0,1],[0,2]]})", "a.zome.json")
+            .find("ball hole"),
+        std::string::npos);
     EXPECT_NE(error_of("{}", "a.obj").find("unknown model format"), std::string::npos);
 }
 

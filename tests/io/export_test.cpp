@@ -19,8 +19,7 @@
 
 using namespace zomeify;
 
-namespace
-{
+namespace {
 
 // Reads a GLB back with tinygltf (an independent reader).
 ::testing::AssertionResult load_glb(const std::string& glb, tinygltf::Model& m)
@@ -88,7 +87,8 @@ TEST(Export, GlbIsInMetresOnTheTableWithNamedNodes)
     EXPECT_EQ(names.size(), m.nodes.size() - 1) << "every node has its own name";
     EXPECT_TRUE(names.count("PZB-BAL-W ball 0"));
     EXPECT_TRUE(names.count("PST-B0-BLU strut 0") + names.count("PST-Y0-YEL strut 0") +
-                names.count("PST-R0-RED strut 0") + names.count("PST-B1-BLU strut 0") > 0);
+                    names.count("PST-R0-RED strut 0") + names.count("PST-B1-BLU strut 0") >
+                0);
     // Centred in x and z, the lowest ball resting on y = 0; the size is parts' built size.
     const double radius = kBallDiameterMm / 2000;
     EXPECT_NEAR(lo[0] + hi[0], 0.0, 1e-6);

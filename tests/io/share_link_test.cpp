@@ -22,15 +22,9 @@ using namespace zomeify;
 
 namespace {
 
-ZomeModel bunny()
-{
-    return read_vef_file(test::shared_path("data/vef/bunny.vef"));
-}
+ZomeModel bunny() { return read_vef_file(test::shared_path("data/vef/bunny.vef")); }
 
-ZomeModel icosahedron()
-{
-    return read_model_file(test::test_data_path("samples/icosahedron.zome.json"));
-}
+ZomeModel icosahedron() { return read_model_file(test::test_data_path("samples/icosahedron.zome.json")); }
 
 std::string link_error(const std::string& link)
 {
@@ -191,14 +185,16 @@ TEST(ShareLink, TruncatedAndRandomLinksNeverCrash)
 // sharing the model again then failed. Every decoded model must be shareable again.
 TEST(ShareLink, FacesMustCloseAlongAStrut)
 {
-    const std::string flipped = "m=1.AgweAAAKAAACBQkVG05UBB4kRUsDDzM2Aw8tPAMDM0UCLUsDADxOAjZUAhseAhUkAQkAFAAAAAEAAAECAAA"
-                                "CAQAAAwEAAAQCAAICAwAAAwEAAAQCAAIDAwAABAEAAgIDAAAEAgACAgQAAAQDAAIDAwACAgQAAAQCAAIDBAA"
-                                "GBAQAAgME";
+    const std::string flipped =
+        "m=1.AgweAAAKAAACBQkVG05UBB4kRUsDDzM2Aw8tPAMDM0UCLUsDADxOAjZUAhseAhUkAQkAFAAAAAEAAAECAAA"
+        "CAQAAAwEAAAQCAAICAwAAAwEAAAQCAAIDAwAABAEAAgIDAAAEAgACAgQAAAQDAAIDAwACAgQAAAQCAAIDBAA"
+        "GBAQAAgME";
     EXPECT_NE(link_error(flipped).find("does not close along a strut"), std::string::npos);
 
     for (const std::string version : {"1", "2"})
     {
-        const std::vector<uint8_t> good = base64url_decode(version == "1" ? v1_icosahedron_body() : body(icosahedron()));
+        const std::vector<uint8_t> good =
+            base64url_decode(version == "1" ? v1_icosahedron_body() : body(icosahedron()));
         for (size_t bit = 0; bit < 8 * good.size(); ++bit)
         {
             std::vector<uint8_t> bytes = good;
@@ -263,8 +259,9 @@ TEST(ShareLink, PapersBunnyWithItsFacesStaysShort)
     {
         const auto d = p.to_double();
         const auto& t = b.transform;
-        const Vec3 n = surface.project(Vec3(t.scale * d[0] + t.translation[0], t.scale * d[1] + t.translation[1],
-                                            t.scale * d[2] + t.translation[2]))
+        const Vec3 n = surface
+                           .project(Vec3(t.scale * d[0] + t.translation[0], t.scale * d[1] + t.translation[1],
+                                         t.scale * d[2] + t.translation[2]))
                            .normal;
         normals.push_back({n.x(), n.y(), n.z()});
     }
@@ -286,4 +283,3 @@ TEST(ShareLink, PapersBunnyWithItsFacesStaysShort)
     EXPECT_EQ(test::canonical(back), test::canonical(b));
     EXPECT_EQ(back.faces.size(), 578u);
 }
-

@@ -107,8 +107,8 @@ TEST(VefVzome, RoundTripThroughZomeJsonAndBack)
 TEST(VefVzome, NumbersAsVzomeWritesThem)
 {
     auto n = [](const char* t) { return parse_vef_number(t, false, "test"); };
-    EXPECT_EQ(n("(8/2,4/2)"), (GoldenFraction{QPhi{2, 4}, 1}));   // 4φ + 2
-    EXPECT_EQ(n("(1/2,3)"), (GoldenFraction{QPhi{6, 1}, 2}));      // (φ + 6)/2
+    EXPECT_EQ(n("(8/2,4/2)"), (GoldenFraction{QPhi{2, 4}, 1})); // 4φ + 2
+    EXPECT_EQ(n("(1/2,3)"), (GoldenFraction{QPhi{6, 1}, 2}));   // (φ + 6)/2
     EXPECT_EQ(n("-3/6"), (GoldenFraction{QPhi{-1, 0}, 2}));
     EXPECT_EQ(n("(5)"), (GoldenFraction{QPhi{5, 0}, 1}));
     EXPECT_EQ(n("(0,0,0,0,4,2)"), (GoldenFraction{QPhi{2, 4}, 1}));
@@ -135,8 +135,7 @@ TEST(VefVzome, GarbageStillHasClearMessages)
     EXPECT_NE(vef_error("vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (1/3,0) (0,0) (0,0) 1 0 1")
                   .find("not a Zome strut"),
               std::string::npos);
-    EXPECT_NE(vef_error("vZome VEF 6 field golden 1 (0,0) (99999999999999999,0) (0,0) (0,0) 0")
-                  .find("too large"),
+    EXPECT_NE(vef_error("vZome VEF 6 field golden 1 (0,0) (99999999999999999,0) (0,0) (0,0) 0").find("too large"),
               std::string::npos);
 }
 

@@ -114,8 +114,8 @@ private:
 bool strut_ok(const ZomeMesh& m, Vertex a, Vertex b)
 {
     const int s = slot_of(m.position(b) - m.position(a));
-    return s >= 0 && !m.find_slot(a, s).is_valid() && !m.find_slot(b, opposite_slot(s)).is_valid()
-        && !m.find_halfedge(a, b).is_valid();
+    return s >= 0 && !m.find_slot(a, s).is_valid() && !m.find_slot(b, opposite_slot(s)).is_valid() &&
+           !m.find_halfedge(a, b).is_valid();
 }
 
 } // namespace
@@ -141,8 +141,8 @@ TEST(MeshObserver, CallbacksMirrorEveryPrimitive)
         else if (op == 1 && c.size() == 3)
         {
             const Edge e = SurfaceMesh::edge(mesh.halfedge(f));
-            if (mesh.valence(mesh.vertex(e, 0)) >= 4 && mesh.valence(mesh.vertex(e, 1)) >= 4
-                && mesh.is_remove_edge_ok(e))
+            if (mesh.valence(mesh.vertex(e, 0)) >= 4 && mesh.valence(mesh.vertex(e, 1)) >= 4 &&
+                mesh.is_remove_edge_ok(e))
                 mesh.remove_edge(e);
         }
         else if (op == 2)

@@ -11,10 +11,7 @@ using namespace zomeify;
 
 namespace {
 
-ZVec point(int i)
-{
-    return ZVec{{i % 7, i / 7 % 11, i / 77, -i, 2 * i, 3}};
-}
+ZVec point(int i) { return ZVec{{i % 7, i / 7 % 11, i / 77, -i, 2 * i, 3}}; }
 
 } // namespace
 

@@ -172,10 +172,10 @@ TEST(MeshValidate, CatchesDoublyConnectedPair)
             m.set_face(h, f);
         m.set_halfedge(f, x);
     };
-    face(ab1, bc, ca);             // a b c
-    face(O(ab2), O(ca), O(bc));    // b a c: b→a (edge 2), a→c, c→b
-    face(O(ab1), ad, db);          // b a d
-    face(ab2, O(db), O(ad));       // a b d
+    face(ab1, bc, ca);          // a b c
+    face(O(ab2), O(ca), O(bc)); // b a c: b→a (edge 2), a→c, c→b
+    face(O(ab1), ad, db);       // b a d
+    face(ab2, O(db), O(ad));    // a b d
     m.set_halfedge(a, ab1);
     m.set_halfedge(b, bc);
     m.set_halfedge(c, ca);

@@ -21,8 +21,8 @@ namespace {
 bool strut_ok(const ZomeMesh& m, Vertex a, Vertex b)
 {
     const int s = slot_of(m.position(b) - m.position(a));
-    return s >= 0 && !m.find_slot(a, s).is_valid() && !m.find_slot(b, opposite_slot(s)).is_valid()
-        && !m.find_halfedge(a, b).is_valid();
+    return s >= 0 && !m.find_slot(a, s).is_valid() && !m.find_slot(b, opposite_slot(s)).is_valid() &&
+           !m.find_halfedge(a, b).is_valid();
 }
 
 std::vector<Vertex> corners_of(const ZomeMesh& m, Face f)

@@ -11,10 +11,7 @@ using namespace zomeify;
 
 namespace {
 
-PartCounts creator3()
-{
-    return kit_contents(parse_owned_kits("creator3"));
-}
+PartCounts creator3() { return kit_contents(parse_owned_kits("creator3")); }
 
 } // namespace
 

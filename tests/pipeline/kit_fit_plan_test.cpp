@@ -20,8 +20,9 @@ struct Torus
     InsideTest inside{projector};
     KitFitPlan plan(size_t budget, int max_resolution = 64) const
     {
-        return plan_kit_fit(mesh, 1, [this](const Vec3& p) { return inside.is_inside(p); }, probe_of(projector),
-                            budget, max_resolution);
+        return plan_kit_fit(
+            mesh, 1, [this](const Vec3& p) { return inside.is_inside(p); }, probe_of(projector), budget,
+            max_resolution);
     }
 };
 
@@ -41,7 +42,8 @@ TEST(KitFitPlan, LargestResolutionWithinTheBudgetKeepingTheHole)
     o.resolution = plan.resolution + 1;
     o.target_genus = 1;
     o.surface_probe = probe_of(t.projector);
-    const InitialModel finer = build_initial_model(t.mesh, [&](const Vec3& p) { return t.inside.is_inside(p); }, o);
+    const InitialModel finer = build_initial_model(
+        t.mesh, [&](const Vec3& p) { return t.inside.is_inside(p); }, o);
     EXPECT_TRUE(finer.model.nodes.size() > 180 || finer.report.topology.genus != 1);
     EXPECT_NE(plan.message.find("cells"), std::string::npos);
 }

@@ -22,7 +22,8 @@ TriangleMesh own_surface(const ZomeModel& m)
                                  m.transform.scale * d[2] + m.transform.translation[2]);
     }
     for (const auto& f : m.faces)
-        for (size_t k = 1; k + 1 < f.size(); ++k) s.triangles.push_back({f[0], f[k], f[k + 1]});
+        for (size_t k = 1; k + 1 < f.size(); ++k)
+            s.triangles.push_back({f[0], f[k], f[k + 1]});
     return s;
 }
 
@@ -46,7 +47,8 @@ TEST(ModelScore, ModelOnItsOwnSurfaceIsAtDistanceZero)
     EXPECT_LT(s.fidelity.hausdorff, 1e-9);
     EXPECT_NEAR(s.energy.distance, 0.0, 1e-12);
     size_t by_kind = 0;
-    for (size_t n : s.struts_by_kind) by_kind += n;
+    for (size_t n : s.struts_by_kind)
+        by_kind += n;
     EXPECT_EQ(by_kind, model.struts.size());
 }
 
@@ -55,7 +57,8 @@ TEST(ModelScore, InsideOutModelIsAllFoldOvers)
     const ZomeModel model = placed(fixtures::cube_shell(2));
     const SurfaceProjector surface(own_surface(model));
     ZomeModel flipped = model;
-    for (auto& f : flipped.faces) std::reverse(f.begin(), f.end());
+    for (auto& f : flipped.faces)
+        std::reverse(f.begin(), f.end());
     EXPECT_EQ(score_model(flipped, surface).fold_overs, model.faces.size());
 }
 
@@ -63,7 +66,8 @@ TEST(ModelScore, ShiftedSurfaceGivesThatDistance)
 {
     const ZomeModel model = placed(fixtures::cube_shell(3));
     TriangleMesh shifted = own_surface(model);
-    for (Vec3& p : shifted.positions) p *= 1.0; // same shape ...
+    for (Vec3& p : shifted.positions)
+        p *= 1.0; // same shape ...
     ZomeModel moved = model;
     moved.transform.translation[0] += 0.25 * 0.1; // ... model moved by 0.1 b0 along x
     const ModelScore s = score_model(moved, SurfaceProjector(shifted));
@@ -84,7 +88,8 @@ TEST(FitTranslation, FindsAKnownOffset)
     const ZomeModel model = placed(fixtures::torus_shell());
     const SurfaceProjector surface(own_surface(model));
     const ModelTransform t = fit_translation(model, surface, model.transform.scale);
-    for (int k = 0; k < 3; ++k) EXPECT_NEAR(t.translation[k], model.transform.translation[k], 1e-6);
+    for (int k = 0; k < 3; ++k)
+        EXPECT_NEAR(t.translation[k], model.transform.translation[k], 1e-6);
 }
 
 } // namespace

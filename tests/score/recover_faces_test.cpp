@@ -25,7 +25,8 @@ std::vector<uint32_t> canonical(std::vector<uint32_t> f)
 std::set<std::vector<uint32_t>> face_set(const std::vector<std::vector<uint32_t>>& faces)
 {
     std::set<std::vector<uint32_t>> out;
-    for (const auto& f : faces) out.insert(canonical(f));
+    for (const auto& f : faces)
+        out.insert(canonical(f));
     return out;
 }
 
@@ -89,15 +90,17 @@ TEST(RecoverFaces, PapersBunnyHasItsPublishedSurface)
     {
         const auto d = p.to_double();
         const auto& t = bunny.transform;
-        const Vec3 n = surface.project(Vec3(t.scale * d[0] + t.translation[0], t.scale * d[1] + t.translation[1],
-                                            t.scale * d[2] + t.translation[2]))
+        const Vec3 n = surface
+                           .project(Vec3(t.scale * d[0] + t.translation[0], t.scale * d[1] + t.translation[1],
+                                         t.scale * d[2] + t.translation[2]))
                            .normal;
         normals.push_back({n.x(), n.y(), n.z()});
     }
     const FaceRecovery r = recover_faces(bunny, normals);
     ASSERT_TRUE(r.ok) << r.error;
     size_t triangles = 0, quads = 0;
-    for (const auto& f : r.faces) (f.size() == 3 ? triangles : quads) += 1;
+    for (const auto& f : r.faces)
+        (f.size() == 3 ? triangles : quads) += 1;
     EXPECT_EQ(r.faces.size(), 578u);
     EXPECT_EQ(triangles, 376u);
     EXPECT_EQ(quads, 202u);
@@ -111,7 +114,8 @@ TEST(RecoverFaces, WrongNormalsAreReportedNotGuessed)
 {
     ZomeModel model = fixtures::cube_shell(2);
     auto normals = centroid_normals(model);
-    for (auto& n : normals) n = {n[1], n[2], n[0]}; // directions that do not fit the surface
+    for (auto& n : normals)
+        n = {n[1], n[2], n[0]}; // directions that do not fit the surface
     const FaceRecovery r = recover_faces(model, normals);
     EXPECT_FALSE(r.ok);
     EXPECT_NE(r.error.find("not simple triangles or quads"), std::string::npos) << r.error;

@@ -34,8 +34,8 @@ TriangleMesh make_uv_sphere(double radius, int rings, int segments)
         for (int j = 0; j < segments; ++j)
         {
             const double phi = 2 * pi * j / segments;
-            m.positions.push_back(radius * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                                                std::cos(theta)));
+            m.positions.push_back(
+                radius * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
         }
     }
     const auto south = static_cast<uint32_t>(m.positions.size());
@@ -61,9 +61,8 @@ TriangleMesh make_icosphere(double radius, int levels)
 {
     const double t = std::numbers::phi;
     TriangleMesh m;
-    m.positions = {Vec3(-1, t, 0), Vec3(1, t, 0),   Vec3(-1, -t, 0), Vec3(1, -t, 0),
-                   Vec3(0, -1, t), Vec3(0, 1, t),   Vec3(0, -1, -t), Vec3(0, 1, -t),
-                   Vec3(t, 0, -1), Vec3(t, 0, 1),   Vec3(-t, 0, -1), Vec3(-t, 0, 1)};
+    m.positions = {Vec3(-1, t, 0),  Vec3(1, t, 0),  Vec3(-1, -t, 0), Vec3(1, -t, 0), Vec3(0, -1, t),  Vec3(0, 1, t),
+                   Vec3(0, -1, -t), Vec3(0, 1, -t), Vec3(t, 0, -1),  Vec3(t, 0, 1),  Vec3(-t, 0, -1), Vec3(-t, 0, 1)};
     m.triangles = {Tri{0, 11, 5}, Tri{0, 5, 1},  Tri{0, 1, 7},   Tri{0, 7, 10}, Tri{0, 10, 11},
                    Tri{1, 5, 9},  Tri{5, 11, 4}, Tri{11, 10, 2}, Tri{10, 7, 6}, Tri{7, 1, 8},
                    Tri{3, 9, 4},  Tri{3, 4, 2},  Tri{3, 2, 6},   Tri{3, 6, 8},  Tri{3, 8, 9},

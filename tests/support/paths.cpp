@@ -13,10 +13,9 @@ namespace {
 // The clock is in the name because Emscripten's getpid() is 42 in every process.
 struct ProcessTempDir
 {
-    std::filesystem::path path =
-        std::filesystem::temp_directory_path() /
-        ("zomeify-tests-" + std::to_string(getpid()) + "-" +
-         std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
+    std::filesystem::path path = std::filesystem::temp_directory_path() /
+                                 ("zomeify-tests-" + std::to_string(getpid()) + "-" +
+                                  std::to_string(std::chrono::steady_clock::now().time_since_epoch().count()));
     ~ProcessTempDir()
     {
         std::error_code ignored;

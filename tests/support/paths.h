@@ -32,10 +32,7 @@ inline bool shared_available() { return std::filesystem::is_directory(shared_pat
 
 namespace zomeify::test {
 
-inline std::string test_data_path(const std::string& rel)
-{
-    return std::string(ZOME_TEST_DATA_DIR) + "/" + rel;
-}
+inline std::string test_data_path(const std::string& rel) { return std::string(ZOME_TEST_DATA_DIR) + "/" + rel; }
 
 //! A scratch file path unique to this test process.
 std::string temp_path(const std::string& name);

@@ -22,8 +22,7 @@ ZVec scaled(const ZVec& v, int k)
 double det3(const LatticeBasis& b)
 {
     const auto u = b.u.to_double(), v = b.v.to_double(), w = b.w.to_double();
-    return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0])
-        + u[2] * (v[0] * w[1] - v[1] * w[0]);
+    return u[0] * (v[1] * w[2] - v[2] * w[1]) - u[1] * (v[0] * w[2] - v[2] * w[0]) + u[2] * (v[0] * w[1] - v[1] * w[0]);
 }
 
 // One strut per distinct face edge, in order of first appearance.
@@ -41,10 +40,7 @@ void add_struts_from_faces(ZomeModel& model)
 
 using Vec3 = std::array<double, 3>;
 
-double dot(const Vec3& a, const Vec3& b)
-{
-    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
+double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 
 Vec3 cross(const Vec3& a, const Vec3& b)
 {
@@ -91,10 +87,7 @@ ZomeModel convex_polyhedron(const std::vector<ZVec>& nodes, const std::vector<ZV
 
 } // namespace
 
-LatticeBasis b1_basis()
-{
-    return {ZVec{{2, 0, 0, 0, 0, 0}}, ZVec{{0, 0, 2, 0, 0, 0}}, ZVec{{0, 0, 0, 0, 2, 0}}};
-}
+LatticeBasis b1_basis() { return {ZVec{{2, 0, 0, 0, 0, 0}}, ZVec{{0, 0, 2, 0, 0, 0}}, ZVec{{0, 0, 0, 0, 2, 0}}}; }
 
 LatticeBasis rhombohedral_basis()
 {
@@ -167,20 +160,11 @@ std::vector<Cell> double_torus_cells()
     return cells;
 }
 
-ZomeModel cube_shell(int n)
-{
-    return voxel_surface(block_cells(n, n, n));
-}
+ZomeModel cube_shell(int n) { return voxel_surface(block_cells(n, n, n)); }
 
-ZomeModel torus_shell()
-{
-    return voxel_surface(torus_cells());
-}
+ZomeModel torus_shell() { return voxel_surface(torus_cells()); }
 
-ZomeModel double_torus_shell()
-{
-    return voxel_surface(double_torus_cells());
-}
+ZomeModel double_torus_shell() { return voxel_surface(double_torus_cells()); }
 
 ZomeModel icosahedron()
 {

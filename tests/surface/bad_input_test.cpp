@@ -10,19 +10,17 @@
 #include "core/surface/read_mesh.h"
 #include "tests/surface/surface_fixtures.h"
 
-namespace zomeify::surface_test
-{
-namespace
-{
+namespace zomeify::surface_test {
+namespace {
 
-const char *const all_names[] = {"m.obj", "m.stl", "m.ply", "m.off", "m.gltf", "m.glb"};
+const char* const all_names[] = {"m.obj", "m.stl", "m.ply", "m.off", "m.gltf", "m.glb"};
 
-std::string read_error(const std::string &bytes, const std::string &name)
+std::string read_error(const std::string& bytes, const std::string& name)
 {
     return invalid_input_message([&] { read_mesh_buffer(bytes_of(bytes), name); });
 }
 
-std::string prepare_error(const PolygonSoup &soup)
+std::string prepare_error(const PolygonSoup& soup)
 {
     return invalid_input_message([&] { prepare_surface(soup); });
 }
@@ -31,7 +29,7 @@ std::string prepare_error(const PolygonSoup &soup)
 
 TEST(SurfaceBadInput, EmptyFile)
 {
-    for (const char *name : all_names)
+    for (const char* name : all_names)
     {
         const std::string m = read_error("", name);
         EXPECT_CONTAINS(m, name);
@@ -45,9 +43,9 @@ TEST(SurfaceBadInput, RandomBytes)
     for (int round = 0; round < 40; ++round)
     {
         std::string bytes(static_cast<size_t>(1 + rng() % 4000), '\0');
-        for (char &c : bytes)
+        for (char& c : bytes)
             c = static_cast<char>(rng() & 0xFF);
-        for (const char *name : all_names)
+        for (const char* name : all_names)
         {
             SCOPED_TRACE(name);
             EXPECT_FALSE(read_error(bytes, name).empty());
@@ -98,7 +96,7 @@ TEST(SurfaceBadInput, NanAndInfCoordinates)
 TEST(SurfaceBadInput, HugeCoordinates)
 {
     PolygonSoup soup = cube_quads();
-    for (Vec3 &p : soup.positions)
+    for (Vec3& p : soup.positions)
         p *= 1e308;
     const SurfaceReport r = diagnose(soup);
     EXPECT_EQ(r.vertices, 8u);
@@ -272,7 +270,6 @@ TEST(SurfaceBadInput, GltfAccessorOutsideBuffer)
     gltf.replace(at, 9, "\"count\":800000");
     EXPECT_FALSE(read_error(gltf, "m.gltf").empty());
 }
-
 
 // Found by fuzzing (tests/fuzz, target ply): a list length beyond long long's range was converted to
 // long long for the message, which is undefined behaviour (UBSan stopped on it).

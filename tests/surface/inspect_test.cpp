@@ -15,10 +15,8 @@
 #include <sys/wait.h>
 #endif
 
-namespace zomeify::surface_test
-{
-namespace
-{
+namespace zomeify::surface_test {
+namespace {
 
 TEST(InspectReport, TableAndJsonOfARepairedCube)
 {
@@ -64,12 +62,12 @@ struct CliResult
 };
 
 // Runs the real CLI binary; stderr goes through a scratch file.
-CliResult run_cli(const std::string &arguments)
+CliResult run_cli(const std::string& arguments)
 {
     const std::string err_path = test::temp_path("inspect_stderr.txt");
     const std::string command = std::string("'") + ZOME_CLI_PATH + "' " + arguments + " 2>'" + err_path + "'";
     CliResult result;
-    FILE *pipe = popen(command.c_str(), "r");
+    FILE* pipe = popen(command.c_str(), "r");
     if (!pipe)
         return result;
     char buffer[4096];
@@ -88,7 +86,7 @@ TEST(InspectCli, JsonMatchesReadmeForAllSharedMeshes)
     ZOME_REQUIRE_SHARED();
     struct Expected
     {
-        const char *file;
+        const char* file;
         int genus, vertices, faces;
     };
     const Expected meshes[] = {
@@ -97,7 +95,7 @@ TEST(InspectCli, JsonMatchesReadmeForAllSharedMeshes)
         {"cube.obj", 0, 26, 48},          {"eight.obj", 2, 766, 1536},        {"3holes.obj", 3, 3596, 7200},
         {"scorpion.obj", 0, 6315, 12626},
     };
-    for (const Expected &m : meshes)
+    for (const Expected& m : meshes)
     {
         SCOPED_TRACE(m.file);
         const CliResult r = run_cli("inspect '" + test::shared_path(std::string("data/meshes/") + m.file) + "' --json");
@@ -143,7 +141,7 @@ TEST(InspectCli, UnreadableFileIsOneLineError)
     const std::string path = test::temp_path("garbage.stl");
     std::ofstream(path, std::ios::binary)
         << std::string("\x89PNG\r\n\x1a\n and more bytes that are not a mesh at all", 50);
-    for (const std::string &args : {"inspect '" + path + "'", "inspect '" + test::temp_path("missing.ply") + "'",
+    for (const std::string& args : {"inspect '" + path + "'", "inspect '" + test::temp_path("missing.ply") + "'",
                                     std::string("inspect"), "inspect '" + path + "' --xml"})
     {
         SCOPED_TRACE(args);

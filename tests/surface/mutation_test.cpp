@@ -11,10 +11,8 @@
 #include "core/surface/read_mesh.h"
 #include "tests/surface/surface_fixtures.h"
 
-namespace zomeify::surface_test
-{
-namespace
-{
+namespace zomeify::surface_test {
+namespace {
 
 struct Sample
 {
@@ -39,7 +37,7 @@ std::vector<Sample> valid_samples()
 }
 
 // Reads and repairs; returns false (with a test failure) only for an unexpected exception type.
-void read_and_repair(const std::string &bytes, const std::string &name)
+void read_and_repair(const std::string& bytes, const std::string& name)
 {
     try
     {
@@ -50,13 +48,13 @@ void read_and_repair(const std::string &bytes, const std::string &name)
         else
             EXPECT_THROW(prepare_surface(soup), InvalidInputError);
     }
-    catch (const InvalidInputError &e)
+    catch (const InvalidInputError& e)
     {
         const std::string message = e.what();
         EXPECT_EQ(message.find('\n'), std::string::npos) << "a multi-line message: " << message;
         EXPECT_EQ(message.rfind(name + ": ", 0), 0u) << message;
     }
-    catch (const std::exception &e)
+    catch (const std::exception& e)
     {
         ADD_FAILURE() << name << ": unexpected exception: " << e.what();
     }
@@ -64,7 +62,7 @@ void read_and_repair(const std::string &bytes, const std::string &name)
 
 TEST(SurfaceMutation, EveryPrefix)
 {
-    for (const Sample &s : valid_samples())
+    for (const Sample& s : valid_samples())
     {
         SCOPED_TRACE(s.name);
         for (size_t n = 0; n < s.bytes.size(); ++n)
@@ -75,7 +73,7 @@ TEST(SurfaceMutation, EveryPrefix)
 TEST(SurfaceMutation, RandomByteChanges)
 {
     std::mt19937 rng(2026);
-    for (const Sample &s : valid_samples())
+    for (const Sample& s : valid_samples())
     {
         SCOPED_TRACE(s.name);
         for (int round = 0; round < 400; ++round)
@@ -87,7 +85,7 @@ TEST(SurfaceMutation, RandomByteChanges)
                 const size_t at = rng() % bytes.size();
                 // Half the time a digit or separator, which keeps text formats parseable and so
                 // reaches deeper checks (counts, indices) than random bytes do.
-                const char *const pool = "0123456789 -.\n";
+                const char* const pool = "0123456789 -.\n";
                 bytes[at] = rng() % 2 ? pool[rng() % 14] : static_cast<char>(rng() & 0xFF);
             }
             read_and_repair(bytes, s.name);

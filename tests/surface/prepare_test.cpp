@@ -9,21 +9,19 @@
 #include "core/surface/weld.h"
 #include "tests/surface/surface_fixtures.h"
 
-namespace zomeify::surface_test
-{
-namespace
-{
+namespace zomeify::surface_test {
+namespace {
 
-bool mentions(const std::vector<std::string> &lines, const std::string &word)
+bool mentions(const std::vector<std::string>& lines, const std::string& word)
 {
-    for (const auto &l : lines)
+    for (const auto& l : lines)
         if (l.find(word) != std::string::npos)
             return true;
     return false;
 }
 
 // Every vertex is one of: kept, welded away, unused, or non-finite.
-void expect_vertex_balance(const SurfaceReport &r)
+void expect_vertex_balance(const SurfaceReport& r)
 {
     EXPECT_EQ(r.input_vertices, r.vertices + r.welded_vertices + r.unreferenced_vertices + r.non_finite_vertices);
 }
@@ -65,7 +63,7 @@ TEST(SurfacePrepare, NonConvexPolygonIsEarClipped)
     EXPECT_EQ(p.report.faces, 2u * 4 + 6 * 2);
     EXPECT_NEAR(signed_volume(p.mesh), 3.0, 1e-12);
     // Each triangle of the caps points the way its cap does (no fold-over).
-    for (const auto &t : p.mesh.triangles)
+    for (const auto& t : p.mesh.triangles)
     {
         const Vec3 n =
             (p.mesh.positions[t[1]] - p.mesh.positions[t[0]]).cross(p.mesh.positions[t[2]] - p.mesh.positions[t[0]]);
@@ -96,7 +94,7 @@ TEST(SurfacePrepare, TriangulateKeepsAreaOfStars)
         triangulate_polygon(positions, polygon, triangles);
         ASSERT_EQ(triangles.size(), 2u * points - 2);
         double area = 0;
-        for (const auto &t : triangles)
+        for (const auto& t : triangles)
         {
             const double z = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).z();
             EXPECT_GT(z, 0);
@@ -188,10 +186,9 @@ TEST(SurfacePrepare, NestedShellsBoundCavities)
 {
     // Cubes of side 5, 3 and 1 around one centre: the middle one is a cavity (faces inward), the
     // innermost is a solid island inside it (faces outward), whatever orientation they came with.
-    const auto cube = [](double side)
-    {
+    const auto cube = [](double side) {
         PolygonSoup c = cube_quads(Vec3::Constant(-0.5));
-        for (Vec3 &p : c.positions)
+        for (Vec3& p : c.positions)
             p *= side;
         return c;
     };

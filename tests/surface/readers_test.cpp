@@ -12,20 +12,15 @@
 #include "tests/support/paths.h"
 #include "tests/surface/surface_fixtures.h"
 
-namespace zomeify::surface_test
-{
-namespace
-{
+namespace zomeify::surface_test {
+namespace {
 
 using test::shared_path;
 using test::temp_path;
 
-PolygonSoup read(const std::string &text, const std::string &name)
-{
-    return read_mesh_buffer(bytes_of(text), name);
-}
+PolygonSoup read(const std::string& text, const std::string& name) { return read_mesh_buffer(bytes_of(text), name); }
 
-void expect_closed_cube(const PolygonSoup &soup)
+void expect_closed_cube(const PolygonSoup& soup)
 {
     const PreparedSurface p = prepare_surface(soup);
     EXPECT_EQ(p.report.vertices, 8u);
@@ -205,7 +200,7 @@ TEST(SurfaceReaders, GltfExternalBuffer)
 TEST(SurfaceReaders, StlAsciiUpperCaseKeywords)
 {
     std::string stl = to_stl_ascii(cube_quads());
-    for (const char *word : {"solid", "facet", "normal", "outer", "loop", "vertex", "endloop", "endfacet", "endsolid"})
+    for (const char* word : {"solid", "facet", "normal", "outer", "loop", "vertex", "endloop", "endfacet", "endsolid"})
         for (size_t at = stl.find(word); at != std::string::npos; at = stl.find(word, at + 1))
             for (size_t k = 0; k < std::string(word).size(); ++k)
                 stl[at + k] = static_cast<char>(stl[at + k] - 'a' + 'A');
@@ -219,18 +214,17 @@ TEST(SurfaceReaders, GltfStripsFansAndNodeHierarchy)
     tinygltf::Model model;
     std::string data;
     const float corners[4][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    data.append(reinterpret_cast<const char *>(corners), sizeof corners); // little-endian host
-    const uint8_t strip[8] = {0, 1, 2, 3, 0, 1, 0, 0};                    // 6 used, padded to 4 bytes
-    data.append(reinterpret_cast<const char *>(strip), sizeof strip);
+    data.append(reinterpret_cast<const char*>(corners), sizeof corners); // little-endian host
+    const uint8_t strip[8] = {0, 1, 2, 3, 0, 1, 0, 0};                   // 6 used, padded to 4 bytes
+    data.append(reinterpret_cast<const char*>(strip), sizeof strip);
     const uint16_t fan[6] = {0, 1, 2, 3, 1, 0}; // 5 used
-    data.append(reinterpret_cast<const char *>(fan), sizeof fan);
+    data.append(reinterpret_cast<const char*>(fan), sizeof fan);
     const uint16_t base[4] = {1, 3, 2, 0}; // 3 used
-    data.append(reinterpret_cast<const char *>(base), sizeof base);
+    data.append(reinterpret_cast<const char*>(base), sizeof base);
     tinygltf::Buffer buffer;
     buffer.data.assign(data.begin(), data.end());
     model.buffers.push_back(buffer);
-    const auto view = [&](size_t offset, size_t length)
-    {
+    const auto view = [&](size_t offset, size_t length) {
         tinygltf::BufferView v;
         v.buffer = 0;
         v.byteOffset = offset;
@@ -238,8 +232,7 @@ TEST(SurfaceReaders, GltfStripsFansAndNodeHierarchy)
         model.bufferViews.push_back(v);
         return static_cast<int>(model.bufferViews.size() - 1);
     };
-    const auto accessor = [&](int view_index, int component, size_t count, int type)
-    {
+    const auto accessor = [&](int view_index, int component, size_t count, int type) {
         tinygltf::Accessor a;
         a.bufferView = view_index;
         a.componentType = component;
@@ -257,8 +250,7 @@ TEST(SurfaceReaders, GltfStripsFansAndNodeHierarchy)
     const int strip_indices = accessor(view(48, 8), TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, 6, TINYGLTF_TYPE_SCALAR);
     const int fan_indices = accessor(view(56, 12), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 5, TINYGLTF_TYPE_SCALAR);
     const int base_indices = accessor(view(68, 8), TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, 3, TINYGLTF_TYPE_SCALAR);
-    const auto primitive = [&](int indices, int mode)
-    {
+    const auto primitive = [&](int indices, int mode) {
         tinygltf::Primitive p;
         p.attributes["POSITION"] = positions;
         p.indices = indices;
@@ -304,10 +296,7 @@ TEST(SurfaceReaders, GltfStripsFansAndNodeHierarchy)
     EXPECT_NEAR(signed_volume(p.mesh), 1.0 / 6 + 8.0 / 6, 1e-12);
 }
 
-TEST(SurfaceReaders, FileNotFound)
-{
-    EXPECT_THROW(read_mesh_file(temp_path("does-not-exist.obj")), IoError);
-}
+TEST(SurfaceReaders, FileNotFound) { EXPECT_THROW(read_mesh_file(temp_path("does-not-exist.obj")), IoError); }
 
 } // namespace
 } // namespace zomeify::surface_test

@@ -7,17 +7,15 @@
 #include "tests/support/paths.h"
 #include "tests/surface/surface_fixtures.h"
 
-namespace zomeify::surface_test
-{
-namespace
-{
+namespace zomeify::surface_test {
+namespace {
 
 using test::shared_path;
 using test::temp_path;
 
 struct SharedMesh
 {
-    const char *file;
+    const char* file;
     long long genus;
     size_t vertices;
     size_t faces;
@@ -34,12 +32,12 @@ const SharedMesh shared_meshes[] = {
 TEST(SurfaceSharedMeshes, ReportMatchesReadme)
 {
     ZOME_REQUIRE_SHARED();
-    for (const SharedMesh &m : shared_meshes)
+    for (const SharedMesh& m : shared_meshes)
     {
         SCOPED_TRACE(m.file);
         const PolygonSoup soup = read_mesh_file(shared_path(std::string("data/meshes/") + m.file));
         const PreparedSurface prepared = prepare_surface(soup);
-        const SurfaceReport &r = prepared.report;
+        const SurfaceReport& r = prepared.report;
         EXPECT_EQ(r.input_vertices, m.vertices);
         EXPECT_EQ(r.input_faces, m.faces);
         EXPECT_EQ(r.vertices, m.vertices);

@@ -11,19 +11,17 @@
 #include "core/base/errors.h"
 #include "core/surface/tiny_gltf_config.h"
 
-namespace zomeify::surface_test
-{
+namespace zomeify::surface_test {
 
-namespace
-{
+namespace {
 
-void put_u32_le(std::string &out, uint32_t v)
+void put_u32_le(std::string& out, uint32_t v)
 {
     for (int i = 0; i < 4; ++i)
         out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
 }
 
-void put_f32_le(std::string &out, float f)
+void put_f32_le(std::string& out, float f)
 {
     uint32_t u;
     std::memcpy(&u, &f, 4);
@@ -31,7 +29,7 @@ void put_f32_le(std::string &out, float f)
 }
 
 // `n` bytes of the value in the given order.
-void put_bytes(std::string &out, uint64_t v, int n, bool big)
+void put_bytes(std::string& out, uint64_t v, int n, bool big)
 {
     for (int i = 0; i < n; ++i)
     {
@@ -40,20 +38,21 @@ void put_bytes(std::string &out, uint64_t v, int n, bool big)
     }
 }
 
-template <typename T> uint64_t bits_of(T value)
+template <typename T>
+uint64_t bits_of(T value)
 {
     uint64_t u = 0;
     std::memcpy(&u, &value, sizeof value);
     return u;
 }
 
-PolygonSoup prism(const std::vector<Eigen::Vector2d> &ring)
+PolygonSoup prism(const std::vector<Eigen::Vector2d>& ring)
 {
     PolygonSoup s;
     const auto n = static_cast<uint32_t>(ring.size());
-    for (const auto &p : ring)
+    for (const auto& p : ring)
         s.positions.push_back(Vec3(p.x(), p.y(), 0));
-    for (const auto &p : ring)
+    for (const auto& p : ring)
         s.positions.push_back(Vec3(p.x(), p.y(), 1));
     std::vector<uint32_t> bottom, top;
     for (uint32_t i = 0; i < n; ++i)
@@ -69,7 +68,7 @@ PolygonSoup prism(const std::vector<Eigen::Vector2d> &ring)
 
 } // namespace
 
-PolygonSoup cube_quads(const Vec3 &offset)
+PolygonSoup cube_quads(const Vec3& offset)
 {
     PolygonSoup s;
     for (int i = 0; i < 8; ++i)
@@ -79,12 +78,12 @@ PolygonSoup cube_quads(const Vec3 &offset)
     return s;
 }
 
-PolygonSoup cube_triangles(const Vec3 &offset)
+PolygonSoup cube_triangles(const Vec3& offset)
 {
     PolygonSoup q = cube_quads(offset);
     PolygonSoup t;
     t.positions = q.positions;
-    for (const auto &p : q.polygons)
+    for (const auto& p : q.polygons)
     {
         t.polygons.push_back({p[0], p[1], p[2]});
         t.polygons.push_back({p[0], p[2], p[3]});
@@ -100,19 +99,16 @@ PolygonSoup pentagonal_prism()
     return prism(ring);
 }
 
-PolygonSoup l_prism()
-{
-    return prism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}});
-}
+PolygonSoup l_prism() { return prism({{0, 0}, {2, 0}, {2, 1}, {1, 1}, {1, 2}, {0, 2}}); }
 
-PolygonSoup merge(const PolygonSoup &a, const PolygonSoup &b)
+PolygonSoup merge(const PolygonSoup& a, const PolygonSoup& b)
 {
     PolygonSoup s = a;
     const auto shift = static_cast<uint32_t>(a.positions.size());
     s.positions.insert(s.positions.end(), b.positions.begin(), b.positions.end());
     for (auto p : b.polygons)
     {
-        for (auto &i : p)
+        for (auto& i : p)
             i += shift;
         s.polygons.push_back(p);
     }
@@ -121,26 +117,26 @@ PolygonSoup merge(const PolygonSoup &a, const PolygonSoup &b)
 
 PolygonSoup reversed(PolygonSoup soup)
 {
-    for (auto &p : soup.polygons)
+    for (auto& p : soup.polygons)
         std::reverse(p.begin(), p.end());
     return soup;
 }
 
-double signed_volume(const TriangleMesh &mesh)
+double signed_volume(const TriangleMesh& mesh)
 {
     double v = 0;
-    for (const auto &t : mesh.triangles)
+    for (const auto& t : mesh.triangles)
         v += mesh.positions[t[0]].dot(mesh.positions[t[1]].cross(mesh.positions[t[2]]));
     return v / 6;
 }
 
-std::string to_obj(const PolygonSoup &soup)
+std::string to_obj(const PolygonSoup& soup)
 {
     std::ostringstream os;
     os.precision(17);
-    for (const auto &p : soup.positions)
+    for (const auto& p : soup.positions)
         os << "v " << p.x() << " " << p.y() << " " << p.z() << "\n";
-    for (const auto &f : soup.polygons)
+    for (const auto& f : soup.polygons)
     {
         os << "f";
         for (const auto i : f)
@@ -150,14 +146,14 @@ std::string to_obj(const PolygonSoup &soup)
     return os.str();
 }
 
-std::string to_off(const PolygonSoup &soup)
+std::string to_off(const PolygonSoup& soup)
 {
     std::ostringstream os;
     os.precision(17);
     os << "OFF\n" << soup.positions.size() << " " << soup.polygons.size() << " 0\n";
-    for (const auto &p : soup.positions)
+    for (const auto& p : soup.positions)
         os << p.x() << " " << p.y() << " " << p.z() << "\n";
-    for (const auto &f : soup.polygons)
+    for (const auto& f : soup.polygons)
     {
         os << f.size();
         for (const auto i : f)
@@ -167,12 +163,12 @@ std::string to_off(const PolygonSoup &soup)
     return os.str();
 }
 
-std::string to_stl_ascii(const PolygonSoup &soup)
+std::string to_stl_ascii(const PolygonSoup& soup)
 {
     std::ostringstream os;
     os.precision(17);
     os << "solid test\n";
-    for (const auto &f : soup.polygons)
+    for (const auto& f : soup.polygons)
         for (size_t k = 1; k + 1 < f.size(); ++k)
         {
             os << "  facet normal 0 0 0\n    outer loop\n";
@@ -185,15 +181,15 @@ std::string to_stl_ascii(const PolygonSoup &soup)
     return os.str();
 }
 
-std::string to_stl_binary(const PolygonSoup &soup, const std::string &header80)
+std::string to_stl_binary(const PolygonSoup& soup, const std::string& header80)
 {
     std::string out = header80.substr(0, 80);
     out.resize(80, ' ');
     uint32_t count = 0;
-    for (const auto &f : soup.polygons)
+    for (const auto& f : soup.polygons)
         count += static_cast<uint32_t>(f.size() - 2);
     put_u32_le(out, count);
-    for (const auto &f : soup.polygons)
+    for (const auto& f : soup.polygons)
         for (size_t k = 1; k + 1 < f.size(); ++k)
         {
             for (int a = 0; a < 3; ++a)
@@ -206,7 +202,7 @@ std::string to_stl_binary(const PolygonSoup &soup, const std::string &header80)
     return out;
 }
 
-std::string to_ply(const PolygonSoup &soup, PlyEncoding encoding, bool wide_lists)
+std::string to_ply(const PolygonSoup& soup, PlyEncoding encoding, bool wide_lists)
 {
     const bool ascii = encoding == PlyEncoding::ascii;
     const bool big = encoding == PlyEncoding::big_endian;
@@ -229,9 +225,9 @@ std::string to_ply(const PolygonSoup &soup, PlyEncoding encoding, bool wide_list
     {
         std::ostringstream os;
         os.precision(9);
-        for (const auto &p : soup.positions)
+        for (const auto& p : soup.positions)
             os << static_cast<float>(p.x()) << " " << p.y() << " " << static_cast<int16_t>(p.z()) << " 7\n";
-        for (const auto &f : soup.polygons)
+        for (const auto& f : soup.polygons)
         {
             os << f.size();
             for (const auto i : f)
@@ -241,14 +237,14 @@ std::string to_ply(const PolygonSoup &soup, PlyEncoding encoding, bool wide_list
         os << "0 1\n";
         return out + os.str();
     }
-    for (const auto &p : soup.positions)
+    for (const auto& p : soup.positions)
     {
         put_bytes(out, bits_of(static_cast<float>(p.x())), 4, big);
         put_bytes(out, bits_of(p.y()), 8, big);
         put_bytes(out, static_cast<uint16_t>(static_cast<int16_t>(p.z())), 2, big);
         put_bytes(out, 7, 1, big);
     }
-    for (const auto &f : soup.polygons)
+    for (const auto& f : soup.polygons)
     {
         put_bytes(out, f.size(), wide_lists ? 2 : 1, big);
         for (const auto i : f)
@@ -260,17 +256,17 @@ std::string to_ply(const PolygonSoup &soup, PlyEncoding encoding, bool wide_list
     return out;
 }
 
-std::string to_gltf(const PolygonSoup &soup, bool binary, const std::vector<double> &matrix)
+std::string to_gltf(const PolygonSoup& soup, bool binary, const std::vector<double>& matrix)
 {
     tinygltf::Model model;
     tinygltf::Buffer buffer;
     std::string data;
-    for (const auto &p : soup.positions)
+    for (const auto& p : soup.positions)
         for (int a = 0; a < 3; ++a)
             put_f32_le(data, static_cast<float>(p[a]));
     const size_t index_offset = data.size();
     size_t index_count = 0;
-    for (const auto &f : soup.polygons)
+    for (const auto& f : soup.polygons)
         for (size_t k = 1; k + 1 < f.size(); ++k)
             for (const auto i : {f[0], f[k], f[k + 1]})
             {
@@ -326,22 +322,22 @@ std::string to_gltf(const PolygonSoup &soup, bool binary, const std::vector<doub
     return os.str();
 }
 
-std::span<const uint8_t> bytes_of(const std::string &s)
+std::span<const uint8_t> bytes_of(const std::string& s)
 {
-    return {reinterpret_cast<const uint8_t *>(s.data()), s.size()};
+    return {reinterpret_cast<const uint8_t*>(s.data()), s.size()};
 }
 
-std::string invalid_input_message(const std::function<void()> &f)
+std::string invalid_input_message(const std::function<void()>& f)
 {
     try
     {
         f();
     }
-    catch (const InvalidInputError &e)
+    catch (const InvalidInputError& e)
     {
         return e.what();
     }
-    catch (const std::exception &e)
+    catch (const std::exception& e)
     {
         ADD_FAILURE() << "expected InvalidInputError, got another exception: " << e.what();
         return "";

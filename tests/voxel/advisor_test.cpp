@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "core/voxel/advisor.h"
-#include "tests/voxel/voxel_test_support.h"
 #include "tests/support/paths.h"
+#include "tests/voxel/voxel_test_support.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
@@ -13,10 +13,10 @@ using namespace zomeify::voxel_test;
 TEST(VoxelAdvisor, GenusKeptAtTheAdvisedResolutionForEverySharedMesh)
 {
     ZOME_REQUIRE_SHARED();
-    for (const auto &name : shared_mesh_names())
+    for (const auto& name : shared_mesh_names())
     {
         SCOPED_TRACE(name);
-        const LoadedSurface &s = shared_surface(name);
+        const LoadedSurface& s = shared_surface(name);
         // The scan is bounded by max_resolution here, not by wall time: sanitizer and wasm builds
         // are slower, and the answer must not depend on the machine.
         AdvisorOptions unbounded;

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "core/voxel/auto_resolution.h"
-#include "tests/voxel/voxel_test_support.h"
 #include "tests/support/paths.h"
+#include "tests/voxel/voxel_test_support.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
@@ -13,10 +13,10 @@ using namespace zomeify::voxel_test;
 TEST(AutoResolution, CoarsestGridKeepingTheGenusWithEnoughBallsOnEverySharedMesh)
 {
     ZOME_REQUIRE_SHARED();
-    for (const auto &name : shared_mesh_names())
+    for (const auto& name : shared_mesh_names())
     {
         SCOPED_TRACE(name);
-        const LoadedSurface &s = shared_surface(name);
+        const LoadedSurface& s = shared_surface(name);
         AutoResolutionOptions options;
         options.seconds = 1e9; // bounded by max_resolution, so the answer does not depend on the machine
         options.initial.surface_probe = probe_of(*s.projector); // as a run does
@@ -56,7 +56,7 @@ TEST(AutoResolution, SaysSoWhenNoGridKeepsTheGenus)
     ZOME_REQUIRE_SHARED();
     // Asking a genus-0 sphere for genus 1: no grid keeps it; the coarsest grid with enough balls
     // is taken and the message names the search.
-    const LoadedSurface &s = shared_surface("sphere");
+    const LoadedSurface& s = shared_surface("sphere");
     AutoResolutionOptions options;
     options.max_resolution = 20;
     options.seconds = 1e9;

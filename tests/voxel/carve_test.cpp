@@ -12,19 +12,19 @@
 #include "core/voxel/repair.h"
 #include "core/voxel/voxelize.h"
 #include "tests/support/geom_fixtures.h"
-#include "tests/voxel/voxel_test_support.h"
 #include "tests/support/paths.h"
+#include "tests/voxel/voxel_test_support.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
 
-namespace
-{
+namespace {
 
-template <class NormalAt> size_t fold_over_faces(const VoxelGrid &g, const NormalAt &normal_at)
+template <class NormalAt>
+size_t fold_over_faces(const VoxelGrid& g, const NormalAt& normal_at)
 {
     size_t count = 0;
-    const auto &d = g.dims();
+    const auto& d = g.dims();
     for (int k = 0; k < d[2]; ++k)
         for (int j = 0; j < d[1]; ++j)
             for (int i = 0; i < d[0]; ++i)
@@ -43,11 +43,11 @@ template <class NormalAt> size_t fold_over_faces(const VoxelGrid &g, const Norma
 }
 
 // RMS distance from the model's nodes to S, in mesh units.
-double node_rms(const ZomeModel &model, const SurfaceProjector &projector)
+double node_rms(const ZomeModel& model, const SurfaceProjector& projector)
 {
-    const auto &t = model.transform;
+    const auto& t = model.transform;
     double sum = 0.0;
-    for (const ZVec &node : model.nodes)
+    for (const ZVec& node : model.nodes)
     {
         const auto z = node.to_double();
         const Vec3 p(t.scale * z[0] + t.translation[0], t.scale * z[1] + t.translation[1],
@@ -65,7 +65,7 @@ TEST(VoxelCarve, KeepsTopologyAndFacesAlongSOnSharedMeshes)
     for (const std::string name : {"fertility", "rockerarm", "bunny", "elk", "3holes"})
     {
         SCOPED_TRACE(name);
-        const LoadedSurface &s = shared_surface(name);
+        const LoadedSurface& s = shared_surface(name);
         GridLayoutOptions layout;
         layout.resolution = 16;
         const auto box = bounding_box(s.mesh);
@@ -73,13 +73,13 @@ TEST(VoxelCarve, KeepsTopologyAndFacesAlongSOnSharedMeshes)
         VoxelGrid before = voxelize(s.mesh, spec, s.predicate());
         ASSERT_TRUE(repair_manifold(before).manifold);
         VoxelGrid after = before;
-        const auto normal_at = [&](const Vec3 &p) { return s.projector->project(p).normal; };
+        const auto normal_at = [&](const Vec3& p) { return s.projector->project(p).normal; };
         const CarveReport report = carve_outside_cells(after, s.predicate(), probe_of(*s.projector));
         EXPECT_GT(report.removed, 0u);
         EXPECT_EQ(before.occupied_count() - after.occupied_count(), report.removed - report.restored);
         EXPECT_EQ(count_nonmanifold_vertices(after), 0u);
 
-        const auto &d = spec.dims;
+        const auto& d = spec.dims;
         for (int k = 0; k < d[2]; ++k)
             for (int j = 0; j < d[1]; ++j)
                 for (int i = 0; i < d[0]; ++i)
@@ -114,14 +114,14 @@ TEST(VoxelCarve, WithoutANormalCheckEveryOutsideCentreThatCanGoGoes)
     const TriangleMesh sphere = test::make_icosphere(1.0, 4);
     const SurfaceProjector projector(sphere);
     const InsideTest inside(projector);
-    const InsidePredicate predicate = [&](const Vec3 &p) { return inside.is_inside(p); };
+    const InsidePredicate predicate = [&](const Vec3& p) { return inside.is_inside(p); };
     GridLayoutOptions layout;
     layout.resolution = 10;
     const auto box = bounding_box(sphere);
     VoxelGrid g = voxelize(sphere, layout_grid(box[0], box[1], layout), predicate);
     ASSERT_TRUE(repair_manifold(g).manifold);
     carve_outside_cells(g, predicate);
-    const auto &d = g.dims();
+    const auto& d = g.dims();
     for (int k = 0; k < d[2]; ++k)
         for (int j = 0; j < d[1]; ++j)
             for (int i = 0; i < d[0]; ++i)

@@ -9,8 +9,7 @@
 using namespace zomeify;
 using namespace zomeify::voxel_test;
 
-namespace
-{
+namespace {
 
 VoxelGrid grid_with(std::initializer_list<std::array<int, 3>> cells)
 {
@@ -19,16 +18,16 @@ VoxelGrid grid_with(std::initializer_list<std::array<int, 3>> cells)
     s.cell = 0.5;
     s.dims = {6, 6, 6};
     VoxelGrid g(s);
-    for (const auto &c : cells)
+    for (const auto& c : cells)
         g.set(c[0], c[1], c[2], Cell::Surface);
     return g;
 }
 
 // Six times the signed volume enclosed by the faces (fan triangulation), in Zome units.
-double signed_volume6(const ZomeModel &m)
+double signed_volume6(const ZomeModel& m)
 {
     double v = 0.0;
-    for (const auto &f : m.faces)
+    for (const auto& f : m.faces)
     {
         const auto a = m.nodes[f[0]].to_double();
         for (size_t q = 1; q + 1 < f.size(); ++q)

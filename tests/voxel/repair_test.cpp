@@ -10,8 +10,7 @@
 using namespace zomeify;
 using namespace zomeify::voxel_test;
 
-namespace
-{
+namespace {
 
 GridSpec spec(int n)
 {
@@ -21,13 +20,13 @@ GridSpec spec(int n)
     return s;
 }
 
-void fill(VoxelGrid &g, std::initializer_list<std::array<int, 3>> cells)
+void fill(VoxelGrid& g, std::initializer_list<std::array<int, 3>> cells)
 {
-    for (const auto &c : cells)
+    for (const auto& c : cells)
         g.set(c[0], c[1], c[2], Cell::Surface);
 }
 
-void block(VoxelGrid &g, int lo, int hi)
+void block(VoxelGrid& g, int lo, int hi)
 {
     for (int k = lo; k < hi; ++k)
         for (int j = lo; j < hi; ++j)
@@ -39,7 +38,7 @@ void block(VoxelGrid &g, int lo, int hi)
 // (3,3,3) meet only at grid vertex (3,3,3). Both are non-simple (removing either cuts the ring).
 // With `closed_by_faces`, (2,3,3) and (2,3,2) make that link a path of faces instead, around the
 // same hole.
-VoxelGrid corner_ring(const GridSpec &s, bool closed_by_faces)
+VoxelGrid corner_ring(const GridSpec& s, bool closed_by_faces)
 {
     VoxelGrid g(s);
     fill(g, {{2, 2, 2}, {2, 2, 1}, {3, 2, 1}, {4, 2, 1}, {4, 2, 2}, {4, 2, 3}, {4, 3, 3}, {3, 3, 3}});
@@ -131,8 +130,7 @@ TEST(VoxelRepair, StuckGridIsNudgedAndRetried)
     options.repair.allow_additions = false;
     const std::array<Vec3, 2> box{Vec3(0, 0, 0), Vec3(5, 5, 5)};
     std::vector<GridSpec> asked;
-    auto source = [&](const GridSpec &s)
-    {
+    auto source = [&](const GridSpec& s) {
         asked.push_back(s);
         return corner_ring(s, asked.size() > 1);
     };
@@ -149,8 +147,7 @@ TEST(VoxelRepair, StuckGridIsNudgedAndRetried)
 
     // A source that never becomes manifold: every retry is used, then the result says so.
     asked.clear();
-    auto always_stuck = [&](const GridSpec &s)
-    {
+    auto always_stuck = [&](const GridSpec& s) {
         asked.push_back(s);
         return corner_ring(s, false);
     };

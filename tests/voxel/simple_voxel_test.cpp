@@ -9,18 +9,14 @@
 
 using namespace zomeify;
 
-namespace
-{
+namespace {
 
-constexpr int bit(int dx, int dy, int dz)
-{
-    return (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1);
-}
+constexpr int bit(int dx, int dy, int dz) { return (dx + 1) + 3 * (dy + 1) + 9 * (dz + 1); }
 
 Neighbourhood with(std::initializer_list<std::array<int, 3>> cells)
 {
     Neighbourhood n = 0;
-    for (const auto &c : cells)
+    for (const auto& c : cells)
         n |= 1u << bit(c[0], c[1], c[2]);
     return n;
 }

@@ -9,23 +9,22 @@
 
 using namespace zomeify;
 
-namespace
-{
+namespace {
 
 // Reference: clip the triangle by the six planes of the closed box [lo, hi] (Sutherland–Hodgman);
 // it meets the box iff something is left.
-bool clipped_nonempty(std::vector<Vec3> poly, const Vec3 &lo, const Vec3 &hi)
+bool clipped_nonempty(std::vector<Vec3> poly, const Vec3& lo, const Vec3& hi)
 {
     for (int axis = 0; axis < 3; ++axis)
         for (int side = 0; side < 2; ++side)
         {
-            auto inside = [&](const Vec3 &p) { return side ? p[axis] <= hi[axis] : p[axis] >= lo[axis]; };
+            auto inside = [&](const Vec3& p) { return side ? p[axis] <= hi[axis] : p[axis] >= lo[axis]; };
             const double bound = side ? hi[axis] : lo[axis];
             std::vector<Vec3> out;
             for (size_t i = 0; i < poly.size(); ++i)
             {
-                const Vec3 &p = poly[i];
-                const Vec3 &q = poly[(i + 1) % poly.size()];
+                const Vec3& p = poly[i];
+                const Vec3& q = poly[(i + 1) % poly.size()];
                 if (inside(p))
                     out.push_back(p);
                 if (inside(p) != inside(q))
@@ -72,7 +71,7 @@ TEST(VoxelTriBox, AgreesWithClippingOnRandomTriangles)
     for (int n = 0; n < 20000; ++n)
     {
         Vec3 p[3];
-        for (auto &q : p)
+        for (auto& q : p)
         {
             const double x = u(rng), y = u(rng), z = u(rng);
             q = Vec3(x, y, z);

@@ -15,22 +15,21 @@
 #include "core/zome/slots.h"
 #include "tests/support/paths.h"
 
-namespace zomeify::voxel_test
-{
+namespace zomeify::voxel_test {
 
-const std::vector<std::string> &shared_mesh_names()
+const std::vector<std::string>& shared_mesh_names()
 {
     static const std::vector<std::string> names = {"fertility", "rockerarm", "bunny", "elk",    "torus",
                                                    "sphere",    "cube",      "eight", "3holes", "scorpion"};
     return names;
 }
 
-const LoadedSurface &shared_surface(const std::string &name)
+const LoadedSurface& shared_surface(const std::string& name)
 {
     static std::mutex mutex;
     static std::map<std::string, std::unique_ptr<LoadedSurface>> cache;
     std::lock_guard lock(mutex);
-    auto &slot = cache[name];
+    auto& slot = cache[name];
     if (!slot)
     {
         auto s = std::make_unique<LoadedSurface>();
@@ -44,13 +43,13 @@ const LoadedSurface &shared_surface(const std::string &name)
     return *slot;
 }
 
-std::string closed_manifold_problem(const ZomeModel &model)
+std::string closed_manifold_problem(const ZomeModel& model)
 {
     std::ostringstream err;
     const uint32_t n = static_cast<uint32_t>(model.nodes.size());
     // Directed face edges: each must occur once, and its reverse once.
     std::map<std::pair<uint32_t, uint32_t>, int> directed;
-    for (const auto &f : model.faces)
+    for (const auto& f : model.faces)
         for (size_t q = 0; q < f.size(); ++q)
         {
             const uint32_t a = f[q], b = f[(q + 1) % f.size()];
@@ -60,11 +59,11 @@ std::string closed_manifold_problem(const ZomeModel &model)
                 return "a directed edge occurs in two faces (non-manifold or inconsistent orientation)";
         }
     std::set<std::pair<uint32_t, uint32_t>> struts;
-    for (const auto &s : model.struts)
+    for (const auto& s : model.struts)
         struts.insert({std::min(s[0], s[1]), std::max(s[0], s[1])});
     if (struts.size() != model.struts.size())
         return "a strut occurs twice";
-    for (const auto &[e, count] : directed)
+    for (const auto& [e, count] : directed)
     {
         if (!directed.count({e.second, e.first}))
         {
@@ -80,17 +79,17 @@ std::string closed_manifold_problem(const ZomeModel &model)
     // around v; mapping the out-edge v -> w to v -> u is thus a permutation of v's out-edges, and
     // the faces at v form one disc exactly when that permutation is a single cycle.
     std::map<std::pair<uint32_t, uint32_t>, uint32_t> next_around; // (v, w) -> u: face has u -> v -> w
-    for (const auto &f : model.faces)
+    for (const auto& f : model.faces)
         for (size_t q = 0; q < f.size(); ++q)
         {
             const uint32_t u = f[(q + f.size() - 1) % f.size()], v = f[q], w = f[(q + 1) % f.size()];
             next_around[{v, w}] = u;
         }
     std::vector<size_t> out_degree(n, 0);
-    for (const auto &[e, u] : next_around)
+    for (const auto& [e, u] : next_around)
         ++out_degree[e.first];
     std::vector<uint8_t> seen_node(n, 0);
-    for (const auto &[e, u0] : next_around)
+    for (const auto& [e, u0] : next_around)
     {
         const uint32_t v = e.first;
         if (seen_node[v])
@@ -115,12 +114,12 @@ std::string closed_manifold_problem(const ZomeModel &model)
     return {};
 }
 
-std::string lattice_problem(const ZomeModel &model)
+std::string lattice_problem(const ZomeModel& model)
 {
     std::unordered_set<ZVec, ZVecHash> positions(model.nodes.begin(), model.nodes.end());
     if (positions.size() != model.nodes.size())
         return "two nodes share a position";
-    for (const auto &s : model.struts)
+    for (const auto& s : model.struts)
     {
         const ZVec d = model.nodes[s[1]] - model.nodes[s[0]];
         const int id = vector_id_of(d);
@@ -135,7 +134,7 @@ std::string lattice_problem(const ZomeModel &model)
     return {};
 }
 
-std::string halfedge_problem(const ZomeModel &model, long long *genus)
+std::string halfedge_problem(const ZomeModel& model, long long* genus)
 {
     try
     {
@@ -144,23 +143,22 @@ std::string halfedge_problem(const ZomeModel &model, long long *genus)
             *genus = report.genus;
         return report.ok() ? std::string() : report.message();
     }
-    catch (const std::exception &e)
+    catch (const std::exception& e)
     {
         return e.what();
     }
 }
 
-long long model_genus(const ZomeModel &model)
+long long model_genus(const ZomeModel& model)
 {
     std::vector<uint32_t> parent(model.nodes.size());
     std::iota(parent.begin(), parent.end(), 0u);
-    auto find = [&](uint32_t x)
-    {
+    auto find = [&](uint32_t x) {
         while (parent[x] != x)
             x = parent[x] = parent[parent[x]];
         return x;
     };
-    for (const auto &s : model.struts)
+    for (const auto& s : model.struts)
         parent[find(s[0])] = find(s[1]);
     long long components = 0;
     for (uint32_t i = 0; i < parent.size(); ++i)

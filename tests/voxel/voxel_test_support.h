@@ -12,11 +12,10 @@
 #include "core/voxel/voxelize.h"
 #include "core/zome/model.h"
 
-namespace zomeify::voxel_test
-{
+namespace zomeify::voxel_test {
 
 //! The ten meshes of shared/data/meshes, in the README's order.
-const std::vector<std::string> &shared_mesh_names();
+const std::vector<std::string>& shared_mesh_names();
 
 //! A shared mesh after load and repair, its genus, and an inside test over it.
 struct LoadedSurface
@@ -28,26 +27,26 @@ struct LoadedSurface
 
     InsidePredicate predicate() const
     {
-        return [this](const Vec3 &p) { return inside->is_inside(p); };
+        return [this](const Vec3& p) { return inside->is_inside(p); };
     }
 };
 
 //! Loads shared/data/meshes/<name>.obj once and keeps it for the rest of the process.
-const LoadedSurface &shared_surface(const std::string &name);
+const LoadedSurface& shared_surface(const std::string& name);
 
 //! An empty string if the model's faces form a closed, consistently oriented 2-manifold: every
 //! strut in exactly two faces with opposite directions, every face edge a strut, and the faces
 //! around every node forming one fan; otherwise the first problem found.
-std::string closed_manifold_problem(const ZomeModel &model);
+std::string closed_manifold_problem(const ZomeModel& model);
 
 //! An empty string if every strut is a B1 along a coordinate axis and no two nodes coincide.
-std::string lattice_problem(const ZomeModel &model);
+std::string lattice_problem(const ZomeModel& model);
 
 //! An empty string if from_model() accepts the model and validate() finds the halfedge mesh valid
 //! (closed 2-manifold, Zome rules); otherwise the reason. `genus` receives validate()'s genus.
-std::string halfedge_problem(const ZomeModel &model, long long *genus = nullptr);
+std::string halfedge_problem(const ZomeModel& model, long long* genus = nullptr);
 
 //! Genus from the faces: components − (V − E + F)/2.
-long long model_genus(const ZomeModel &model);
+long long model_genus(const ZomeModel& model);
 
 } // namespace zomeify::voxel_test

@@ -5,8 +5,8 @@
 
 #include "core/voxel/tri_box.h"
 #include "core/voxel/voxelize.h"
-#include "tests/voxel/voxel_test_support.h"
 #include "tests/support/paths.h"
+#include "tests/voxel/voxel_test_support.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
@@ -40,7 +40,7 @@ TEST(VoxelGridLayout, CentredWithAnEmptyLayer)
 TEST(VoxelVoxelize, CubeAlignedWithTheGrid)
 {
     ZOME_REQUIRE_SHARED();
-    const LoadedSurface &cube = shared_surface("cube");
+    const LoadedSurface& cube = shared_surface("cube");
     GridLayoutOptions o;
     o.resolution = 8;
     VoxelizeStats st;
@@ -57,10 +57,10 @@ TEST(VoxelVoxelize, CubeAlignedWithTheGrid)
 TEST(VoxelVoxelize, MatchesBruteForceAndCoversTheSurface)
 {
     ZOME_REQUIRE_SHARED();
-    for (const char *name : {"torus", "eight", "bunny"})
+    for (const char* name : {"torus", "eight", "bunny"})
     {
         SCOPED_TRACE(name);
-        const LoadedSurface &s = shared_surface(name);
+        const LoadedSurface& s = shared_surface(name);
         GridLayoutOptions o;
         o.resolution = 9;
         const auto box = bounding_box(s.mesh);
@@ -79,7 +79,7 @@ TEST(VoxelVoxelize, MatchesBruteForceAndCoversTheSurface)
                     const Vec3 hi = spec.origin + spec.cell * Vec3(i + 1, j + 1, k + 1);
                     const Vec3 c = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
                     bool crossed = false;
-                    for (const auto &t : s.mesh.triangles)
+                    for (const auto& t : s.mesh.triangles)
                         if (triangle_box_overlap(c, half, s.mesh.positions[t[0]], s.mesh.positions[t[1]],
                                                  s.mesh.positions[t[2]], BoxContact::Open))
                         {
@@ -90,7 +90,7 @@ TEST(VoxelVoxelize, MatchesBruteForceAndCoversTheSurface)
                     ASSERT_EQ(static_cast<int>(g.at(i, j, k)), static_cast<int>(want)) << i << " " << j << " " << k;
                 }
         // Coverage: every vertex of S lies in an occupied closed cell, and the outer layer is empty.
-        for (const Vec3 &p : s.mesh.positions)
+        for (const Vec3& p : s.mesh.positions)
         {
             const Vec3 q = (p - spec.origin) / spec.cell;
             bool covered = false;

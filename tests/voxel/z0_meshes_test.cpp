@@ -12,8 +12,8 @@
 #include <gtest/gtest.h>
 
 #include "core/voxel/initial_model.h"
-#include "tests/voxel/voxel_test_support.h"
 #include "tests/support/paths.h"
+#include "tests/voxel/voxel_test_support.h"
 
 using namespace zomeify;
 using namespace zomeify::voxel_test;
@@ -30,9 +30,9 @@ TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
     for (size_t i = 0; i < std::size(resolutions); ++i)
         table << "---|";
     table << "\n";
-    for (const auto &name : shared_mesh_names())
+    for (const auto& name : shared_mesh_names())
     {
-        const LoadedSurface &s = shared_surface(name);
+        const LoadedSurface& s = shared_surface(name);
         table << "| " << name << " | " << s.genus << " |";
         for (int n : resolutions)
         {
@@ -40,7 +40,7 @@ TEST(VoxelSharedMeshes, Z0IsAClosedManifoldOfB1StrutsAtEveryResolution)
             InitialModelOptions options;
             options.resolution = n;
             options.surface_probe = probe_of(*s.projector); // carved as a run does
-            options.target_genus = s.genus; // as `zomeify run` does: nudge the grid to keep the genus
+            options.target_genus = s.genus;                 // as `zomeify run` does: nudge the grid to keep the genus
             // CPU time, not wall time: the table should not depend on what else the machine runs.
             const std::clock_t start = std::clock();
             const InitialModel z0 = build_initial_model(s.mesh, s.predicate(), options);

@@ -10,7 +10,7 @@ using namespace zomeify;
 TEST(QPhi, FieldIdentities)
 {
     const QPhi phi{0, 1};
-    EXPECT_EQ(phi * phi, (QPhi{1, 1})); // φ² = φ + 1
+    EXPECT_EQ(phi * phi, (QPhi{1, 1}));           // φ² = φ + 1
     EXPECT_EQ(phi * (QPhi{-1, 1}), (QPhi{1, 0})); // φ(φ − 1) = 1
     EXPECT_EQ(phi_power(3), (QPhi{1, 2}));
     EXPECT_EQ(phi_power(-1), (QPhi{-1, 1}));
@@ -21,13 +21,13 @@ TEST(QPhi, FieldIdentities)
 TEST(QPhi, SignAndOrderAreExact)
 {
     EXPECT_EQ((QPhi{0, 0}).sign(), 0);
-    EXPECT_EQ((QPhi{-1, 1}).sign(), 1);   // 1/φ
-    EXPECT_EQ((QPhi{2, -1}).sign(), 1);   // 2 − φ
-    EXPECT_EQ((QPhi{-2, 1}).sign(), -1);  // φ − 2
+    EXPECT_EQ((QPhi{-1, 1}).sign(), 1);  // 1/φ
+    EXPECT_EQ((QPhi{2, -1}).sign(), 1);  // 2 − φ
+    EXPECT_EQ((QPhi{-2, 1}).sign(), -1); // φ − 2
     // Consecutive Fibonacci numbers: F(n+1) − F(n)·φ = (−1/φ)^n, tiny and alternating in sign.
-    EXPECT_EQ((QPhi{832040, -514229}).sign(), -1);  // n = 29
+    EXPECT_EQ((QPhi{832040, -514229}).sign(), -1); // n = 29
     EXPECT_EQ((QPhi{-832040, 514229}).sign(), 1);
-    EXPECT_EQ((QPhi{1346269, -832040}).sign(), 1);  // n = 30
+    EXPECT_EQ((QPhi{1346269, -832040}).sign(), 1); // n = 30
     EXPECT_LT(compare(QPhi{1, 1}, QPhi{3, 0}), 0); // φ² < 3
     EXPECT_GT(compare(QPhi{0, 2}, QPhi{3, 0}), 0); // 2φ > 3
     for (int a = -20; a <= 20; ++a)

@@ -32,11 +32,11 @@ TEST(Slots, SixtyTwoSlotsOneHundredEightySixVectors)
 TEST(Slots, NonZomeVectorsAreRejected)
 {
     EXPECT_EQ(vector_id_of(ZVec{}), -1);
-    EXPECT_EQ(vector_id_of(ZVec{{0, 1, 0, 0, 0, 0}}), -1);                   // half a b0
+    EXPECT_EQ(vector_id_of(ZVec{{0, 1, 0, 0, 0, 0}}), -1);                           // half a b0
     EXPECT_EQ(vector_id_of(zome_vector(0).times_phi().times_phi().times_phi()), -1); // b3
-    EXPECT_EQ(vector_id_of(zome_vector(0).div_phi()), -1);                   // b(-1)
-    EXPECT_EQ(vector_id_of(zome_vector(0) + zome_vector(vector_id(2, 0))), -1); // x + z, length √2
-    EXPECT_EQ(slot_of(ZVec{{0, 1, 0, 1, 0, 1}}), 30);                         // (1,1,1)/2 is yellow
+    EXPECT_EQ(vector_id_of(zome_vector(0).div_phi()), -1);                           // b(-1)
+    EXPECT_EQ(vector_id_of(zome_vector(0) + zome_vector(vector_id(2, 0))), -1);      // x + z, length √2
+    EXPECT_EQ(slot_of(ZVec{{0, 1, 0, 1, 0, 1}}), 30);                                // (1,1,1)/2 is yellow
 }
 
 TEST(Slots, DirectionsHaveTheRightColour)

@@ -46,9 +46,9 @@ struct AnnealStats
     bool cancelled = false;
     std::array<OperatorCounts, kOperatorKinds> per_operator{};
     std::array<uint64_t, kRejectionKinds> rejections{}; //!< why proposals were not valid
-    uint64_t busy_seeds = 0;          //!< seed draws that found the node claimed by another thread
-    uint64_t dead_seeds = 0;          //!< seed draws that hit a deleted node slot
-    uint64_t lost_races = 0;          //!< accepted proposals dropped at commit (position taken meanwhile)
+    uint64_t busy_seeds = 0;                            //!< seed draws that found the node claimed by another thread
+    uint64_t dead_seeds = 0;                            //!< seed draws that hit a deleted node slot
+    uint64_t lost_races = 0; //!< accepted proposals dropped at commit (position taken meanwhile)
     //! Accepted proposals decided again at commit (E_surface, Metropolis, clearance) because
     //! another thread committed in between.
     uint64_t redecisions = 0;

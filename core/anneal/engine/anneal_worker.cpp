@@ -23,9 +23,8 @@ class Worker
 public:
     Worker(AnnealerState& state, int index, WorkerTotals& totals, const std::function<void()>& report)
         : s_(state), index_(index), totals_(totals.stats), report_(report),
-          rng_(Rng::for_stream(state.options.seed, static_cast<uint64_t>(index))),
-          shared_(state.options.threads > 1), by_proposals_(state.options.max_proposals > 0),
-          operators_(state.options.operator_weights)
+          rng_(Rng::for_stream(state.options.seed, static_cast<uint64_t>(index))), shared_(state.options.threads > 1),
+          by_proposals_(state.options.max_proposals > 0), operators_(state.options.operator_weights)
     {
         make_claims();
     }

@@ -80,7 +80,8 @@ double estimate_t0(AnnealerState& s, int& valid)
         if (propose(kind, s.mesh, seed, rng, claims, proposal))
         {
             EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change);
-            if (delta.ok() && (!delta.adds_fold_over || !s.options.refuse_new_fold_overs)) // what the workers would consider
+            if (delta.ok() &&
+                (!delta.adds_fold_over || !s.options.refuse_new_fold_overs)) // what the workers would consider
             {
                 s.energy.add_surface_change(s.mesh, proposal.change, delta);
                 spread.add(s.energy.delta_energy(delta));
@@ -98,7 +99,8 @@ Box3 zome_box(const SurfaceContext& context)
     const ModelTransform& t = context.transform();
     const Vec3 translation(t.translation[0], t.translation[1], t.translation[2]);
     Box3 box;
-    for (const Vec3& p : context.projector().mesh().positions) box.extend((p - translation) / t.scale);
+    for (const Vec3& p : context.projector().mesh().positions)
+        box.extend((p - translation) / t.scale);
     return box;
 }
 
@@ -110,7 +112,8 @@ void add_counts(AnnealStats& into, const AnnealStats& from)
         into.per_operator[k].valid += from.per_operator[k].valid;
         into.per_operator[k].accepted += from.per_operator[k].accepted;
     }
-    for (int r = 0; r < kRejectionKinds; ++r) into.rejections[r] += from.rejections[r];
+    for (int r = 0; r < kRejectionKinds; ++r)
+        into.rejections[r] += from.rejections[r];
     into.busy_seeds += from.busy_seeds;
     into.dead_seeds += from.dead_seeds;
     into.lost_races += from.lost_races;
@@ -155,7 +158,8 @@ namespace {
 bool has_room(const ZomeMesh& mesh, const NodeTags& tags, const LocalChange& c) noexcept
 {
     size_t edges = c.added_struts().size();
-    for (const NewFace& f : c.added_faces()) edges += f.size;
+    for (const NewFace& f : c.added_faces())
+        edges += f.size;
     return mesh.has_capacity_for(c.added_nodes().size(), edges, c.added_faces().size()) &&
            mesh.vertices_size() + c.added_nodes().size() <= tags.capacity();
 }
@@ -170,7 +174,8 @@ bool positions_still_free(const ZomeMesh& mesh, const LocalChange& c) noexcept
         if (!there.is_valid())
             continue;
         bool leaving = false;
-        for (const Vertex& r : c.removed_nodes()) leaving = leaving || r == there;
+        for (const Vertex& r : c.removed_nodes())
+            leaving = leaving || r == there;
         if (!leaving)
             return false;
     }
@@ -194,8 +199,8 @@ Rejection clash_rejection(ClashKind clash) noexcept
     }
 }
 
-Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDelta& delta, SurfaceChange& surface_change,
-                                        bool check_clearance)
+Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDelta& delta,
+                                        SurfaceChange& surface_change, bool check_clearance)
 {
     const LocalChange& change = proposal.change;
     if (!has_room(mesh, *tags, change))
@@ -256,7 +261,8 @@ AnnealProgress AnnealerState::progress_locked() const
     p.nodes = mesh.n_vertices();
     p.struts = mesh.n_edges();
     p.faces = mesh.n_faces();
-    p.acceptance_rate = p.valid_proposals ? static_cast<double>(p.commits) / static_cast<double>(p.valid_proposals) : 0.0;
+    p.acceptance_rate =
+        p.valid_proposals ? static_cast<double>(p.commits) / static_cast<double>(p.valid_proposals) : 0.0;
     p.finished = finished.load();
     return p;
 }
@@ -312,9 +318,10 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
         throw std::logic_error("Annealer::run() called twice");
     const ModelTransform& transform = s.context.transform();
 
-    const double t0 = s.options.initial_temperature > 0.0 ? s.options.initial_temperature : estimate_t0(s, s.t0_samples);
-    const double t_min = s.options.min_temperature_ratio > 0.0 ? s.options.min_temperature_ratio * t0
-                                                               : s.options.min_temperature;
+    const double t0 =
+        s.options.initial_temperature > 0.0 ? s.options.initial_temperature : estimate_t0(s, s.t0_samples);
+    const double t_min =
+        s.options.min_temperature_ratio > 0.0 ? s.options.min_temperature_ratio * t0 : s.options.min_temperature;
     s.schedule = CoolingSchedule(t0, t_min);
     s.slabs = slab_plan(s.mesh.n_vertices(), s.options.threads);
     s.temperature.store(s.schedule.initial());
@@ -361,7 +368,8 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
         }
     }
     run_worker(s, 0, totals[0], report);
-    for (std::thread& t : threads) t.join();
+    for (std::thread& t : threads)
+        t.join();
     if (!s.error.empty())
         throw std::runtime_error("annealing failed: " + s.error);
     FoldRepairStats repair;
@@ -384,7 +392,8 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
         result.best = EnergyState(from_model(result.best_model), s.context, s.options.energy).terms();
     }
     AnnealStats& st = result.stats;
-    for (const WorkerTotals& t : totals) add_counts(st, t.stats);
+    for (const WorkerTotals& t : totals)
+        add_counts(st, t.stats);
     st.wall_seconds = s.clock.seconds();
     st.threads = running;
     st.proposals = s.proposals.load();

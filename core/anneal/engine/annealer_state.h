@@ -54,9 +54,9 @@ struct AnnealerState
     const SurfaceContext& context;
     AnnealOptions options; // resolved: threads ≥ 1, energy.target_nodes set
 
-    ZomeMesh mesh;       // written under the commit lock (or with all workers parked)
-    EnergyState energy;  // sums and E_surface's state: commit lock
-    CoverageGuard coverage; // commit lock
+    ZomeMesh mesh;            // written under the commit lock (or with all workers parked)
+    EnergyState energy;       // sums and E_surface's state: commit lock
+    CoverageGuard coverage;   // commit lock
     ClearanceIndex clearance; // commit lock
     size_t uncovered_at_start = 0;
     EnergyTerms start_terms;
@@ -84,7 +84,7 @@ struct AnnealerState
     // Progress counters (flushed by the workers in batches; exact after they end).
     std::atomic<uint64_t> proposals{0}, valid_proposals{0}, commits{0};
     std::atomic<double> temperature{0.0};
-    Stopwatch clock; // restarted when the workers start
+    Stopwatch clock;          // restarted when the workers start
     double best_energy = 0.0; // commit lock
 
     // Set once by the first worker that fails (commit lock).
@@ -96,8 +96,7 @@ struct WorkerTotals
 {
     AnnealStats stats; // only the counters are used
 };
-void run_worker(AnnealerState& state, int index, WorkerTotals& totals,
-                const std::function<void()>& report_progress);
+void run_worker(AnnealerState& state, int index, WorkerTotals& totals, const std::function<void()>& report_progress);
 
 //! The rejection reason of a clash.
 Rejection clash_rejection(ClashKind clash) noexcept;

@@ -39,7 +39,8 @@ std::vector<Vertex> seeds_near_fold_overs(const AnnealerState& s)
             for (Vertex w : adjacent_vertices(s.mesh, v))
             {
                 near.push_back(w);
-                for (Vertex x : adjacent_vertices(s.mesh, w)) near.push_back(x);
+                for (Vertex x : adjacent_vertices(s.mesh, w))
+                    near.push_back(x);
             }
     }
     std::sort(near.begin(), near.end());

@@ -17,7 +17,8 @@ public:
     void add(uint64_t x) noexcept { h_ = mix64(h_ ^ (x + 0x9E3779B97F4A7C15ULL)); }
     void add(const ZVec& p) noexcept
     {
-        for (int32_t c : p.c) add(static_cast<uint64_t>(static_cast<uint32_t>(c)));
+        for (int32_t c : p.c)
+            add(static_cast<uint64_t>(static_cast<uint32_t>(c)));
     }
     void add_double(double x) noexcept
     {
@@ -40,7 +41,8 @@ uint64_t canonical_model_hash(const ZomeModel& model)
     std::vector<ZVec> nodes = model.nodes;
     std::sort(nodes.begin(), nodes.end());
     h.add(static_cast<uint64_t>(nodes.size()));
-    for (const ZVec& p : nodes) h.add(p);
+    for (const ZVec& p : nodes)
+        h.add(p);
 
     std::vector<std::pair<ZVec, ZVec>> struts;
     struts.reserve(model.struts.size());
@@ -83,11 +85,13 @@ uint64_t canonical_model_hash(const ZomeModel& model)
     for (const auto& f : faces)
     {
         h.add(static_cast<uint64_t>(f.size()));
-        for (const ZVec& p : f) h.add(p);
+        for (const ZVec& p : f)
+            h.add(p);
     }
 
     h.add_double(model.transform.scale);
-    for (double t : model.transform.translation) h.add_double(t);
+    for (double t : model.transform.translation)
+        h.add_double(t);
     return h.value();
 }
 

@@ -38,7 +38,8 @@ public:
             return static_cast<OperatorKind>(rng.below(kOperatorKinds));
         const uint64_t r = rng.below(total_);
         int k = 0;
-        while (r >= cumulative_[k]) ++k;
+        while (r >= cumulative_[k])
+            ++k;
         return static_cast<OperatorKind>(k);
     }
 

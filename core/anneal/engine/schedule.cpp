@@ -26,10 +26,18 @@ double portable_exp(double x) noexcept
     const double k = std::floor(x * kInvLn2 + 0.5);
     const double r = (x - k * kLn2High) - k * kLn2Low;
     double p = 1.0 / 6227020800.0; // 1/13!
-    constexpr double kInverseFactorials[] = {1.0 / 479001600.0, 1.0 / 39916800.0, 1.0 / 3628800.0,
-                                             1.0 / 362880.0,    1.0 / 40320.0,    1.0 / 5040.0,
-                                             1.0 / 720.0,       1.0 / 120.0,      1.0 / 24.0,
-                                             1.0 / 6.0,         0.5,              1.0,
+    constexpr double kInverseFactorials[] = {1.0 / 479001600.0,
+                                             1.0 / 39916800.0,
+                                             1.0 / 3628800.0,
+                                             1.0 / 362880.0,
+                                             1.0 / 40320.0,
+                                             1.0 / 5040.0,
+                                             1.0 / 720.0,
+                                             1.0 / 120.0,
+                                             1.0 / 24.0,
+                                             1.0 / 6.0,
+                                             0.5,
+                                             1.0,
                                              1.0};
     for (double c : kInverseFactorials)
         p = p * r + c;
@@ -96,9 +104,6 @@ void DeltaSpread::add(double delta_energy) noexcept
     m2_ += d * (delta_energy - mean_);
 }
 
-double DeltaSpread::stdev() const noexcept
-{
-    return count_ < 2 ? 0.0 : std::sqrt(m2_ / count_);
-}
+double DeltaSpread::stdev() const noexcept { return count_ < 2 ? 0.0 : std::sqrt(m2_ / count_); }
 
 } // namespace zomeify

@@ -11,8 +11,8 @@ namespace {
 // The six 5-fold axes of the icosahedron, (0, ±1, φ) and its cyclic permutations: well spread,
 // so successive sweeps cut the model along quite different planes.
 constexpr double kPhi = 1.6180339887498949;
-constexpr std::array<std::array<double, 3>, 6> kDirections{{
-    {0, 1, kPhi}, {0, -1, kPhi}, {1, kPhi, 0}, {-1, kPhi, 0}, {kPhi, 0, 1}, {-kPhi, 0, 1}}};
+constexpr std::array<std::array<double, 3>, 6> kDirections{
+    {{0, 1, kPhi}, {0, -1, kPhi}, {1, kPhi, 0}, {-1, kPhi, 0}, {kPhi, 0, 1}, {-kPhi, 0, 1}}};
 
 } // namespace
 
@@ -57,7 +57,8 @@ std::vector<MeshIndex> seed_slab(const ZomeMesh& mesh, uint64_t epoch, int slab,
     std::nth_element(nodes.begin() + static_cast<std::ptrdiff_t>(begin),
                      nodes.begin() + static_cast<std::ptrdiff_t>(end - 1), nodes.end());
     out.reserve(end - begin);
-    for (size_t i = begin; i < end; ++i) out.push_back(nodes[i].second);
+    for (size_t i = begin; i < end; ++i)
+        out.push_back(nodes[i].second);
     // nth_element leaves the members in an order of the standard library's choosing; seeds are
     // drawn by position in this list, so it must be canonical (native and wasm draw alike).
     std::sort(out.begin(), out.end());

@@ -25,7 +25,7 @@ namespace zomeify {
 
 struct SlabPlan
 {
-    int slabs = 1;          //!< slabs the model is cut into
+    int slabs = 1;                //!< slabs the model is cut into
     uint64_t epoch_proposals = 0; //!< proposals (all threads together) per epoch
 };
 

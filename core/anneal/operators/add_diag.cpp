@@ -6,13 +6,11 @@
 #include "core/mesh/circulators.h"
 #include "core/zome/tables.h"
 
-namespace zomeify::detail
-{
-namespace
-{
+namespace zomeify::detail {
+namespace {
 
 // Whether the diagonal from `corner` merges the quad edges corner → corner+1 → corner+2.
-bool diagonal_is_zome(const ZomeMesh &mesh, Face f, size_t corner) noexcept
+bool diagonal_is_zome(const ZomeMesh& mesh, Face f, size_t corner) noexcept
 {
     // Edge i of face_halfedges ends at corner i.
     int ids[4];
@@ -24,8 +22,8 @@ bool diagonal_is_zome(const ZomeMesh &mesh, Face f, size_t corner) noexcept
 }
 
 // The rest of ADDDIAG once the quad's region is loaded.
-Rejection split_quad(const ZomeMesh &mesh, Face f, size_t corner, Claims &claims, Fill &fill,
-                     LocalChange &change) noexcept
+Rejection split_quad(const ZomeMesh& mesh, Face f, size_t corner, Claims& claims, Fill& fill,
+                     LocalChange& change) noexcept
 {
     if (fill.link_size() != 4)
         return Rejection::FaceSize;
@@ -39,16 +37,16 @@ Rejection split_quad(const ZomeMesh &mesh, Face f, size_t corner, Claims &claims
 
 } // namespace
 
-Rejection add_diag_at(const ZomeMesh &mesh, Face f, size_t corner, Claims &claims, Fill &fill,
-                      LocalChange &change) noexcept
+Rejection add_diag_at(const ZomeMesh& mesh, Face f, size_t corner, Claims& claims, Fill& fill,
+                      LocalChange& change) noexcept
 {
     if (const Rejection r = load_face_region(mesh, f, claims, fill, change); r != Rejection::None)
         return r;
     return split_quad(mesh, f, corner, claims, fill, change);
 }
 
-Rejection propose_add_diag(const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &claims, Fill &fill,
-                           LocalChange &change) noexcept
+Rejection propose_add_diag(const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims, Fill& fill,
+                           LocalChange& change) noexcept
 {
     const Face f = random_face(mesh, seed, rng, /*quads_only=*/true);
     if (!f.is_valid())

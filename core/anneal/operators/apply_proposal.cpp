@@ -8,12 +8,11 @@
 #include "core/anneal/proposal.h"
 #include "core/mesh/topology_error.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-void apply_proposal(ZomeMesh &mesh, const Proposal &proposal, FixedList<Face, LocalChange::kMaxFaces> *added_faces)
+void apply_proposal(ZomeMesh& mesh, const Proposal& proposal, FixedList<Face, LocalChange::kMaxFaces>* added_faces)
 {
-    const LocalChange &c = proposal.change;
+    const LocalChange& c = proposal.change;
     if (proposal.rejection != Rejection::None || c.overflowed())
         throw TopologyError("apply_proposal: the proposal was not valid");
     // Check before touching anything, so a broken contract leaves the mesh as it was.
@@ -28,7 +27,7 @@ void apply_proposal(ZomeMesh &mesh, const Proposal &proposal, FixedList<Face, Lo
     for (Edge e : c.removed_struts())
         if (mesh.is_valid(e))
             throw TopologyError("apply_proposal: a removed strut kept a face");
-    const auto &added = c.added_nodes();
+    const auto& added = c.added_nodes();
     for (size_t i = 0; i < c.removed_nodes().size(); ++i)
     {
         const Vertex v = c.removed_nodes()[i];
@@ -41,7 +40,7 @@ void apply_proposal(ZomeMesh &mesh, const Proposal &proposal, FixedList<Face, Lo
     }
     for (size_t i = c.removed_nodes().size(); i < added.size(); ++i)
         mesh.add_vertex(added[i]);
-    for (const NewFace &f : c.added_faces())
+    for (const NewFace& f : c.added_faces())
     {
         std::array<Vertex, 4> corners;
         for (size_t j = 0; j < f.size; ++j)

@@ -4,10 +4,9 @@
 
 #include "core/anneal/operators/exact_steps.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-Rejection fan_fill(const ZomeMesh &mesh, const LocalChange &change, const ZVec &p, Fill &fill, size_t must_a,
+Rejection fan_fill(const ZomeMesh& mesh, const LocalChange& change, const ZVec& p, Fill& fill, size_t must_a,
                    size_t must_b) noexcept
 {
     if (!position_usable(mesh, change, p))
@@ -17,7 +16,7 @@ Rejection fan_fill(const ZomeMesh &mesh, const LocalChange &change, const ZVec &
     FixedList<int, kMaxLink> slots_at_p;
     for (size_t i = 0; i < k; ++i)
     {
-        const FillNode &node = fill.nodes()[i];
+        const FillNode& node = fill.nodes()[i];
         const int id = vector_between(p, node.pos);
         if (id < 0)
             continue;
@@ -29,8 +28,9 @@ Rejection fan_fill(const ZomeMesh &mesh, const LocalChange &change, const ZVec &
         slots_at_p.push_back(slot);
         connected.push_back(static_cast<uint8_t>(i));
     }
-    auto is_connected = [&](size_t i)
-    { return i == kNoLinkIndex || std::find(connected.begin(), connected.end(), i) != connected.end(); };
+    auto is_connected = [&](size_t i) {
+        return i == kNoLinkIndex || std::find(connected.begin(), connected.end(), i) != connected.end();
+    };
     if (!is_connected(must_a) || !is_connected(must_b))
         return Rejection::NoCandidate;
     if (connected.size() < 3)

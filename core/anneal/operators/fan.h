@@ -11,14 +11,13 @@
 
 #include "core/anneal/operators/fill.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
 inline constexpr size_t kNoLinkIndex = SIZE_MAX;
 
 //! Adds the node at p and the fan faces to `fill` (whose link is loaded). `must_a` and `must_b`
 //! (or kNoLinkIndex) are link indices p has to connect to (SPLITSTRUT's strut ends).
-Rejection fan_fill(const ZomeMesh &mesh, const LocalChange &change, const ZVec &p, Fill &fill,
+Rejection fan_fill(const ZomeMesh& mesh, const LocalChange& change, const ZVec& p, Fill& fill,
                    size_t must_a = kNoLinkIndex, size_t must_b = kNoLinkIndex) noexcept;
 
 } // namespace zomeify::detail

@@ -5,10 +5,8 @@
 #include "core/anneal/operators/exact_steps.h"
 #include "core/mesh/circulators.h"
 
-namespace zomeify::detail
-{
-namespace
-{
+namespace zomeify::detail {
+namespace {
 
 // A strut of the fill that is not a link edge, with the Zome vector id of nodes[a] → nodes[b].
 struct FillStrut
@@ -19,17 +17,17 @@ struct FillStrut
 };
 using FillStruts = FixedList<FillStrut, LocalChange::kMaxStruts>;
 
-bool removed(const LocalChange &change, Edge e) noexcept
+bool removed(const LocalChange& change, Edge e) noexcept
 {
     return std::find(change.removed_struts().begin(), change.removed_struts().end(), e) !=
            change.removed_struts().end();
 }
 
 // Collects the new struts and checks that the faces form a disc over the link.
-Rejection collect_struts(const Fill &fill, FillStruts &struts) noexcept
+Rejection collect_struts(const Fill& fill, FillStruts& struts) noexcept
 {
     uint64_t link_edges = 0;
-    for (const FillFace &f : fill.faces())
+    for (const FillFace& f : fill.faces())
     {
         for (size_t j = 0; j < f.size; ++j)
         {
@@ -44,12 +42,12 @@ Rejection collect_struts(const Fill &fill, FillStruts &struts) noexcept
                 link_edges |= bit;
                 continue;
             }
-            auto same = [&](const FillStrut &s) { return s.a == a && s.b == b; };
-            auto back = [&](const FillStrut &s) { return s.a == b && s.b == a; };
+            auto same = [&](const FillStrut& s) { return s.a == a && s.b == b; };
+            auto back = [&](const FillStrut& s) { return s.a == b && s.b == a; };
             if (std::any_of(struts.begin(), struts.end(), same))
                 return Rejection::Topology;
-            FillStrut *const end = &struts[0] + struts.size();
-            FillStrut *const it = std::find_if(&struts[0], end, back);
+            FillStrut* const end = &struts[0] + struts.size();
+            FillStrut* const it = std::find_if(&struts[0], end, back);
             if (it != end)
             {
                 it->seen_back = true;
@@ -65,7 +63,7 @@ Rejection collect_struts(const Fill &fill, FillStruts &struts) noexcept
     const uint64_t all = fill.link_size() >= 64 ? ~uint64_t{0} : (uint64_t{1} << fill.link_size()) - 1;
     if (link_edges != all)
         return Rejection::Topology;
-    for (const FillStrut &s : struts)
+    for (const FillStrut& s : struts)
         if (!s.seen_back)
             return Rejection::Topology;
     return Rejection::None;
@@ -78,11 +76,11 @@ struct NodeSlots
     FixedList<uint8_t, 64> others;
 };
 
-Rejection slots_at(const FillStruts &struts, size_t i, NodeSlots &out) noexcept
+Rejection slots_at(const FillStruts& struts, size_t i, NodeSlots& out) noexcept
 {
     out.slots.clear();
     out.others.clear();
-    for (const FillStrut &s : struts)
+    for (const FillStrut& s : struts)
     {
         int slot = -1;
         uint8_t other = 0;
@@ -110,8 +108,8 @@ Rejection slots_at(const FillStruts &struts, size_t i, NodeSlots &out) noexcept
 
 // Checks one surviving node: its kept struts against the new ones, and its valence afterwards.
 // Sets `changed` when its set of struts changes.
-Rejection check_surviving(const ZomeMesh &mesh, const Fill &fill, const LocalChange &change, Vertex v,
-                          const NodeSlots &mine, bool &changed) noexcept
+Rejection check_surviving(const ZomeMesh& mesh, const Fill& fill, const LocalChange& change, Vertex v,
+                          const NodeSlots& mine, bool& changed) noexcept
 {
     size_t kept = 0, before = 0;
     for (Halfedge h : outgoing_halfedges(mesh, v))
@@ -132,19 +130,18 @@ Rejection check_surviving(const ZomeMesh &mesh, const Fill &fill, const LocalCha
     return kept + mine.slots.size() < 3 ? Rejection::Valence : Rejection::None;
 }
 
-bool removed_face(const LocalChange &change, Face f) noexcept
+bool removed_face(const LocalChange& change, Face f) noexcept
 {
-    return std::find(change.removed_faces().begin(), change.removed_faces().end(), f) !=
-           change.removed_faces().end();
+    return std::find(change.removed_faces().begin(), change.removed_faces().end(), f) != change.removed_faces().end();
 }
 
 // Whether fill nodes a and b end up joined by a strut: a new one, or a surviving one.
-bool joined_after(const ZomeMesh &mesh, const Fill &fill, const FillStruts &struts, const LocalChange &change,
+bool joined_after(const ZomeMesh& mesh, const Fill& fill, const FillStruts& struts, const LocalChange& change,
                   uint8_t a, uint8_t b) noexcept
 {
     if (fill.is_link_edge(a, b) || fill.is_link_edge(b, a))
         return true;
-    for (const FillStrut &s : struts)
+    for (const FillStrut& s : struts)
         if ((s.a == a && s.b == b) || (s.a == b && s.b == a))
             return true;
     const Vertex va = fill.nodes()[a].v, vb = fill.nodes()[b].v;
@@ -158,14 +155,14 @@ bool joined_after(const ZomeMesh &mesh, const Fill &fill, const FillStruts &stru
 // be built that way (paper §3.2: fold-overs lead to strut collisions). Refused both ways: a new
 // quad over a joined diagonal, and a new strut across a surviving quad. Reads only faces at
 // claimed link nodes.
-Rejection check_quad_diagonals(const ZomeMesh &mesh, const Fill &fill, const FillStruts &struts,
-                               const LocalChange &change) noexcept
+Rejection check_quad_diagonals(const ZomeMesh& mesh, const Fill& fill, const FillStruts& struts,
+                               const LocalChange& change) noexcept
 {
-    for (const FillFace &f : fill.faces())
+    for (const FillFace& f : fill.faces())
         if (f.size == 4 && (joined_after(mesh, fill, struts, change, f.corners[0], f.corners[2]) ||
                             joined_after(mesh, fill, struts, change, f.corners[1], f.corners[3])))
             return Rejection::FoldedQuad;
-    for (const FillStrut &s : struts)
+    for (const FillStrut& s : struts)
     {
         const Vertex va = fill.nodes()[s.a].v, vb = fill.nodes()[s.b].v;
         if (!va.is_valid() || !vb.is_valid())
@@ -185,7 +182,7 @@ Rejection check_quad_diagonals(const ZomeMesh &mesh, const Fill &fill, const Fil
 
 } // namespace
 
-bool position_usable(const ZomeMesh &mesh, const LocalChange &change, const ZVec &p) noexcept
+bool position_usable(const ZomeMesh& mesh, const LocalChange& change, const ZVec& p) noexcept
 {
     const Vertex at = mesh.find_vertex(p);
     return !at.is_valid() ||
@@ -225,14 +222,14 @@ bool Fill::link_is_simple() const noexcept
     return true;
 }
 
-Rejection claim(Claims &claims, Vertex v) noexcept
+Rejection claim(Claims& claims, Vertex v) noexcept
 {
     if (claims.take(v))
         return Rejection::None;
     return claims.held().size() == Claims::kMaxNodes ? Rejection::Overflow : Rejection::Busy;
 }
 
-bool keeps_strut_in_slot(const ZomeMesh &mesh, Vertex v, int slot, const LocalChange &change) noexcept
+bool keeps_strut_in_slot(const ZomeMesh& mesh, Vertex v, int slot, const LocalChange& change) noexcept
 {
     for (Halfedge h : outgoing_halfedges(mesh, v))
         if (mesh.slot(h) == slot && !removed(change, ZomeMesh::edge(h)))
@@ -240,7 +237,7 @@ bool keeps_strut_in_slot(const ZomeMesh &mesh, Vertex v, int slot, const LocalCh
     return false;
 }
 
-Rejection complete_fill(const ZomeMesh &mesh, const Fill &fill, Claims &claims, LocalChange &change) noexcept
+Rejection complete_fill(const ZomeMesh& mesh, const Fill& fill, Claims& claims, LocalChange& change) noexcept
 {
     if (fill.overflowed())
         return Rejection::Overflow;
@@ -257,7 +254,7 @@ Rejection complete_fill(const ZomeMesh &mesh, const Fill &fill, Claims &claims, 
     {
         if (const Rejection r = slots_at(struts, i, mine); r != Rejection::None)
             return r;
-        const FillNode &node = fill.nodes()[i];
+        const FillNode& node = fill.nodes()[i];
         if (!node.v.is_valid())
         {
             if (!position_usable(mesh, change, node.pos))
@@ -286,12 +283,12 @@ Rejection complete_fill(const ZomeMesh &mesh, const Fill &fill, Claims &claims, 
             if (const Rejection r = claim(claims, w); r != Rejection::None)
                 return r;
 
-    for (const FillNode &node : fill.nodes())
+    for (const FillNode& node : fill.nodes())
         if (!node.v.is_valid())
             change.add_node(node.pos);
-    for (const FillStrut &s : struts)
+    for (const FillStrut& s : struts)
         change.add_strut(fill.nodes()[s.a].pos, fill.nodes()[s.b].pos);
-    for (const FillFace &f : fill.faces())
+    for (const FillFace& f : fill.faces())
     {
         std::array<ZVec, 4> corners;
         for (size_t j = 0; j < f.size; ++j)

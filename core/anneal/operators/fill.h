@@ -22,8 +22,7 @@
 #include "core/anneal/proposal.h"
 #include "core/mesh/zome_mesh.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
 //! Links of up to this many nodes (a node has at most 62 struts, a link rarely more than 12).
 inline constexpr size_t kMaxLink = 48;
@@ -53,13 +52,13 @@ public:
         link_size_ = 0;
     }
     //! Appends the next node of the link (all link nodes come before any new node).
-    bool add_link_node(const ZomeMesh &mesh, Vertex v) noexcept
+    bool add_link_node(const ZomeMesh& mesh, Vertex v) noexcept
     {
         link_size_ = nodes_.size() + 1;
         return nodes_.push_back({v, mesh.position(v)});
     }
     //! Appends a node the change adds; returns its index (or -1 when full).
-    int add_new_node(const ZVec &p) noexcept
+    int add_new_node(const ZVec& p) noexcept
     {
         return nodes_.push_back({Vertex(), p}) ? static_cast<int>(nodes_.size() - 1) : -1;
     }
@@ -76,8 +75,8 @@ public:
     }
 
     size_t link_size() const noexcept { return link_size_; }
-    const FixedList<FillNode, kMaxFillNodes> &nodes() const noexcept { return nodes_; }
-    const FixedList<FillFace, LocalChange::kMaxFaces> &faces() const noexcept { return faces_; }
+    const FixedList<FillNode, kMaxFillNodes>& nodes() const noexcept { return nodes_; }
+    const FixedList<FillFace, LocalChange::kMaxFaces>& faces() const noexcept { return faces_; }
     bool overflowed() const noexcept { return nodes_.overflowed() || faces_.overflowed(); }
 
 private:
@@ -89,13 +88,13 @@ private:
 };
 
 //! Claims v for the proposal: None, Busy (another thread holds it) or Overflow (claims full).
-Rejection claim(Claims &claims, Vertex v) noexcept;
+Rejection claim(Claims& claims, Vertex v) noexcept;
 
 //! Whether v keeps a strut in `slot` that the change does not remove.
-bool keeps_strut_in_slot(const ZomeMesh &mesh, Vertex v, int slot, const LocalChange &change) noexcept;
+bool keeps_strut_in_slot(const ZomeMesh& mesh, Vertex v, int slot, const LocalChange& change) noexcept;
 
 //! Whether a node may be added at p: no node there, or only one the change removes.
-bool position_usable(const ZomeMesh &mesh, const LocalChange &change, const ZVec &p) noexcept;
+bool position_usable(const ZomeMesh& mesh, const LocalChange& change, const ZVec& p) noexcept;
 
 //! Checks the fill of the hole that `change`'s removed elements leave and, when it is valid, adds
 //! its nodes, struts and faces to `change` and claims the 1-rings of every surviving node whose
@@ -103,6 +102,6 @@ bool position_usable(const ZomeMesh &mesh, const LocalChange &change, const ZVec
 //! every new strut by two faces in opposite directions (a disc), every new strut a Zome vector,
 //! no two struts in one slot of a node (which also rules out a second strut between two nodes),
 //! valence ≥ 3, and every new position free (a removed node's own position counts as free).
-Rejection complete_fill(const ZomeMesh &mesh, const Fill &fill, Claims &claims, LocalChange &change) noexcept;
+Rejection complete_fill(const ZomeMesh& mesh, const Fill& fill, Claims& claims, LocalChange& change) noexcept;
 
 } // namespace zomeify::detail

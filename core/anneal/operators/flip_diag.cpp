@@ -5,10 +5,9 @@
 #include "core/anneal/operators/operators.h"
 #include "core/anneal/operators/region.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-Rejection flip_diag_at(const ZomeMesh &mesh, Halfedge h, Claims &claims, Fill &fill, LocalChange &change) noexcept
+Rejection flip_diag_at(const ZomeMesh& mesh, Halfedge h, Claims& claims, Fill& fill, LocalChange& change) noexcept
 {
     if (const Rejection r = load_strut_region(mesh, h, claims, fill, change); r != Rejection::None)
         return r;
@@ -20,8 +19,8 @@ Rejection flip_diag_at(const ZomeMesh &mesh, Halfedge h, Claims &claims, Fill &f
     return complete_fill(mesh, fill, claims, change);
 }
 
-Rejection propose_flip_diag(const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &claims, Fill &fill,
-                            LocalChange &change) noexcept
+Rejection propose_flip_diag(const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims, Fill& fill,
+                            LocalChange& change) noexcept
 {
     const Halfedge h = random_diagonal(mesh, seed, rng);
     return h.is_valid() ? flip_diag_at(mesh, h, claims, fill, change) : Rejection::NoCandidate;

@@ -6,13 +6,11 @@
 #include "core/anneal/operators/operators.h"
 #include "core/anneal/operators/region.h"
 
-namespace zomeify::detail
-{
-namespace
-{
+namespace zomeify::detail {
+namespace {
 
 // The rest of INSNODE once the face's region is loaded.
-Rejection fill_face(const ZomeMesh &mesh, const ZVec &p, Claims &claims, Fill &fill, LocalChange &change) noexcept
+Rejection fill_face(const ZomeMesh& mesh, const ZVec& p, Claims& claims, Fill& fill, LocalChange& change) noexcept
 {
     if (const Rejection r = fan_fill(mesh, change, p, fill); r != Rejection::None)
         return r;
@@ -21,16 +19,16 @@ Rejection fill_face(const ZomeMesh &mesh, const ZVec &p, Claims &claims, Fill &f
 
 } // namespace
 
-Rejection ins_node_at(const ZomeMesh &mesh, Face f, const ZVec &p, Claims &claims, Fill &fill,
-                      LocalChange &change) noexcept
+Rejection ins_node_at(const ZomeMesh& mesh, Face f, const ZVec& p, Claims& claims, Fill& fill,
+                      LocalChange& change) noexcept
 {
     if (const Rejection r = load_face_region(mesh, f, claims, fill, change); r != Rejection::None)
         return r;
     return fill_face(mesh, p, claims, fill, change);
 }
 
-Rejection propose_ins_node(const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &claims, Fill &fill,
-                           LocalChange &change) noexcept
+Rejection propose_ins_node(const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims, Fill& fill,
+                           LocalChange& change) noexcept
 {
     const Face f = random_face(mesh, seed, rng, /*quads_only=*/false);
     if (!f.is_valid())
@@ -39,8 +37,8 @@ Rejection propose_ins_node(const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &
         return r;
     const size_t k = fill.link_size();
     const size_t i = rng.below(k);
-    const ZVec &a = fill.nodes()[i].pos;
-    const ZVec &b = fill.nodes()[(i + 1) % k].pos;
+    const ZVec& a = fill.nodes()[i].pos;
+    const ZVec& b = fill.nodes()[(i + 1) % k].pos;
     const std::optional<ZVec> p =
         rng.below(2) == 0
             ? split_position(a, vector_between(a, b), rng)

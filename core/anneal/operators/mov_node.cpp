@@ -10,12 +10,10 @@
 #include "core/anneal/operators/region.h"
 #include "core/mesh/circulators.h"
 
-namespace zomeify::detail
-{
-namespace
-{
+namespace zomeify::detail {
+namespace {
 
-std::optional<ZVec> between_two_struts(const ZomeMesh &mesh, Vertex n, Rng &rng) noexcept
+std::optional<ZVec> between_two_struts(const ZomeMesh& mesh, Vertex n, Rng& rng) noexcept
 {
     const size_t d = mesh.valence(n);
     if (d < 2)
@@ -39,8 +37,8 @@ std::optional<ZVec> between_two_struts(const ZomeMesh &mesh, Vertex n, Rng &rng)
 }
 
 // The rest of MOVNODE once n's region is loaded.
-Rejection fill_star(const ZomeMesh &mesh, Vertex n, const ZVec &p, Claims &claims, Fill &fill,
-                    LocalChange &change) noexcept
+Rejection fill_star(const ZomeMesh& mesh, Vertex n, const ZVec& p, Claims& claims, Fill& fill,
+                    LocalChange& change) noexcept
 {
     if (p == mesh.position(n))
         return Rejection::NoCandidate;
@@ -51,16 +49,16 @@ Rejection fill_star(const ZomeMesh &mesh, Vertex n, const ZVec &p, Claims &claim
 
 } // namespace
 
-Rejection mov_node_to(const ZomeMesh &mesh, Vertex n, const ZVec &p, Claims &claims, Fill &fill,
-                      LocalChange &change) noexcept
+Rejection mov_node_to(const ZomeMesh& mesh, Vertex n, const ZVec& p, Claims& claims, Fill& fill,
+                      LocalChange& change) noexcept
 {
     if (const Rejection r = load_node_region(mesh, n, claims, fill, change); r != Rejection::None)
         return r;
     return fill_star(mesh, n, p, claims, fill, change);
 }
 
-Rejection propose_mov_node(const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &claims, Fill &fill,
-                           LocalChange &change) noexcept
+Rejection propose_mov_node(const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims, Fill& fill,
+                           LocalChange& change) noexcept
 {
     if (const Rejection r = load_node_region(mesh, seed, claims, fill, change); r != Rejection::None)
         return r;
@@ -69,7 +67,7 @@ Rejection propose_mov_node(const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &
     {
         const size_t k = fill.link_size();
         const size_t i = rng.below(k);
-        const ZVec &a = fill.nodes()[i].pos;
+        const ZVec& a = fill.nodes()[i].pos;
         p = split_position(a, vector_between(a, fill.nodes()[(i + 1) % k].pos), rng);
     }
     else

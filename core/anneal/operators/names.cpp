@@ -1,8 +1,7 @@
 // The paper's operator names and the rejection reasons, for statistics and reports.
 #include "core/anneal/proposal.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
 std::string_view operator_name(OperatorKind kind) noexcept
 {

@@ -4,10 +4,9 @@
 #include "core/anneal/operators/operators.h"
 #include "core/anneal/proposal.h"
 
-namespace zomeify
-{
+namespace zomeify {
 
-bool propose(OperatorKind kind, const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &claims, Proposal &out) noexcept
+bool propose(OperatorKind kind, const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims, Proposal& out) noexcept
 {
     using namespace detail;
     out.kind = kind;
@@ -50,10 +49,10 @@ bool propose(OperatorKind kind, const ZomeMesh &mesh, Vertex seed, Rng &rng, Cla
     return r == Rejection::None;
 }
 
-bool new_positions_free(const ZomeMesh &mesh, const Proposal &proposal) noexcept
+bool new_positions_free(const ZomeMesh& mesh, const Proposal& proposal) noexcept
 {
-    const LocalChange &c = proposal.change;
-    for (const ZVec &p : c.added_nodes())
+    const LocalChange& c = proposal.change;
+    for (const ZVec& p : c.added_nodes())
     {
         const Vertex at = mesh.find_vertex(p);
         if (at.is_valid() &&

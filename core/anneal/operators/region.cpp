@@ -2,13 +2,12 @@
 
 #include "core/mesh/circulators.h"
 
-namespace zomeify::detail
-{
-namespace
-{
+namespace zomeify::detail {
+namespace {
 
 // Outgoing halfedges of the seed that pass `keep`; a uniformly random one, or invalid.
-template <class Keep> Halfedge random_outgoing(const ZomeMesh &mesh, Vertex seed, Rng &rng, Keep keep) noexcept
+template <class Keep>
+Halfedge random_outgoing(const ZomeMesh& mesh, Vertex seed, Rng& rng, Keep keep) noexcept
 {
     FixedList<Halfedge, kSlotCount> candidates;
     for (Halfedge h : outgoing_halfedges(mesh, seed))
@@ -19,17 +18,17 @@ template <class Keep> Halfedge random_outgoing(const ZomeMesh &mesh, Vertex seed
     return candidates[rng.below(candidates.size())];
 }
 
-bool is_triangle(const ZomeMesh &mesh, Halfedge h) noexcept
+bool is_triangle(const ZomeMesh& mesh, Halfedge h) noexcept
 {
     return !mesh.is_boundary(h) && mesh.next(mesh.next(mesh.next(h))) == h;
 }
 
-bool is_quad(const ZomeMesh &mesh, Halfedge h) noexcept
+bool is_quad(const ZomeMesh& mesh, Halfedge h) noexcept
 {
     return !mesh.is_boundary(h) && mesh.next(mesh.next(mesh.next(mesh.next(h)))) == h && !is_triangle(mesh, h);
 }
 
-Rejection add_and_claim(const ZomeMesh &mesh, Vertex v, Claims &claims, Fill &fill) noexcept
+Rejection add_and_claim(const ZomeMesh& mesh, Vertex v, Claims& claims, Fill& fill) noexcept
 {
     if (const Rejection r = claim(claims, v); r != Rejection::None)
         return r;
@@ -38,25 +37,25 @@ Rejection add_and_claim(const ZomeMesh &mesh, Vertex v, Claims &claims, Fill &fi
 
 } // namespace
 
-Halfedge random_strut(const ZomeMesh &mesh, Vertex seed, Rng &rng) noexcept
+Halfedge random_strut(const ZomeMesh& mesh, Vertex seed, Rng& rng) noexcept
 {
     return random_outgoing(mesh, seed, rng, [](Halfedge) { return true; });
 }
 
-Halfedge random_diagonal(const ZomeMesh &mesh, Vertex seed, Rng &rng) noexcept
+Halfedge random_diagonal(const ZomeMesh& mesh, Vertex seed, Rng& rng) noexcept
 {
     return random_outgoing(
         mesh, seed, rng, [&](Halfedge h) { return is_triangle(mesh, h) && is_triangle(mesh, ZomeMesh::opposite(h)); });
 }
 
-Face random_face(const ZomeMesh &mesh, Vertex seed, Rng &rng, bool quads_only) noexcept
+Face random_face(const ZomeMesh& mesh, Vertex seed, Rng& rng, bool quads_only) noexcept
 {
     const Halfedge h = random_outgoing(
         mesh, seed, rng, [&](Halfedge x) { return !mesh.is_boundary(x) && (!quads_only || is_quad(mesh, x)); });
     return h.is_valid() ? mesh.face(h) : Face();
 }
 
-Rejection load_face_region(const ZomeMesh &mesh, Face f, Claims &claims, Fill &fill, LocalChange &change) noexcept
+Rejection load_face_region(const ZomeMesh& mesh, Face f, Claims& claims, Fill& fill, LocalChange& change) noexcept
 {
     fill.clear();
     for (Vertex v : face_vertices(mesh, f))
@@ -65,7 +64,7 @@ Rejection load_face_region(const ZomeMesh &mesh, Face f, Claims &claims, Fill &f
     return change.remove_face(f) ? Rejection::None : Rejection::Overflow;
 }
 
-Rejection load_strut_region(const ZomeMesh &mesh, Halfedge h, Claims &claims, Fill &fill, LocalChange &change) noexcept
+Rejection load_strut_region(const ZomeMesh& mesh, Halfedge h, Claims& claims, Fill& fill, LocalChange& change) noexcept
 {
     fill.clear();
     for (const Halfedge side : {h, ZomeMesh::opposite(h)})
@@ -83,7 +82,7 @@ Rejection load_strut_region(const ZomeMesh &mesh, Halfedge h, Claims &claims, Fi
     return change.overflowed() ? Rejection::Overflow : Rejection::None;
 }
 
-Rejection load_node_region(const ZomeMesh &mesh, Vertex n, Claims &claims, Fill &fill, LocalChange &change) noexcept
+Rejection load_node_region(const ZomeMesh& mesh, Vertex n, Claims& claims, Fill& fill, LocalChange& change) noexcept
 {
     fill.clear();
     const Halfedge start = mesh.halfedge(n);

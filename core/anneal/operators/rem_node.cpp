@@ -12,10 +12,8 @@
 #include "core/anneal/operators/operators.h"
 #include "core/anneal/operators/region.h"
 
-namespace zomeify::detail
-{
-namespace
-{
+namespace zomeify::detail {
+namespace {
 
 // The chords chosen so far, by the slots they take at their ends.
 struct Chord
@@ -25,16 +23,16 @@ struct Chord
 };
 using Chords = FixedList<Chord, kMaxLink>;
 
-bool slot_taken_by_chord(const Chords &chords, size_t node, int slot) noexcept
+bool slot_taken_by_chord(const Chords& chords, size_t node, int slot) noexcept
 {
-    return std::any_of(chords.begin(), chords.end(),
-                       [&](const Chord &c)
-                       { return (c.a == node && c.slot_a == slot) || (c.b == node && c.slot_b == slot); });
+    return std::any_of(chords.begin(), chords.end(), [&](const Chord& c) {
+        return (c.a == node && c.slot_a == slot) || (c.b == node && c.slot_b == slot);
+    });
 }
 
 // Whether a new strut between link nodes a and b is possible; records it in `chords` if so.
-bool try_chord(const ZomeMesh &mesh, const LocalChange &change, const Fill &fill, size_t a, size_t b,
-               Chords &chords) noexcept
+bool try_chord(const ZomeMesh& mesh, const LocalChange& change, const Fill& fill, size_t a, size_t b,
+               Chords& chords) noexcept
 {
     const int id = vector_between(fill.nodes()[a].pos, fill.nodes()[b].pos);
     if (id < 0)
@@ -49,8 +47,8 @@ bool try_chord(const ZomeMesh &mesh, const LocalChange &change, const Fill &fill
 
 } // namespace
 
-Rejection propose_rem_node(const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &claims, Fill &fill,
-                           LocalChange &change) noexcept
+Rejection propose_rem_node(const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims, Fill& fill,
+                           LocalChange& change) noexcept
 {
     if (const Rejection r = load_node_region(mesh, seed, claims, fill, change); r != Rejection::None)
         return r;

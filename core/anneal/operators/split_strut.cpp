@@ -7,11 +7,10 @@
 #include "core/anneal/operators/operators.h"
 #include "core/anneal/operators/region.h"
 
-namespace zomeify::detail
-{
+namespace zomeify::detail {
 
-Rejection split_strut_at(const ZomeMesh &mesh, Halfedge h, const ZVec &p, Claims &claims, Fill &fill,
-                         LocalChange &change) noexcept
+Rejection split_strut_at(const ZomeMesh& mesh, Halfedge h, const ZVec& p, Claims& claims, Fill& fill,
+                         LocalChange& change) noexcept
 {
     // Link: v at 0, then h's face's other corners, u, then the opposite face's other corners.
     const size_t u_index = mesh.valence(mesh.face(h)) - 1;
@@ -22,8 +21,8 @@ Rejection split_strut_at(const ZomeMesh &mesh, Halfedge h, const ZVec &p, Claims
     return complete_fill(mesh, fill, claims, change);
 }
 
-Rejection propose_split_strut(const ZomeMesh &mesh, Vertex seed, Rng &rng, Claims &claims, Fill &fill,
-                              LocalChange &change) noexcept
+Rejection propose_split_strut(const ZomeMesh& mesh, Vertex seed, Rng& rng, Claims& claims, Fill& fill,
+                              LocalChange& change) noexcept
 {
     const Halfedge h = random_strut(mesh, seed, rng);
     if (!h.is_valid())

@@ -20,7 +20,9 @@ std::unique_ptr<AnnealScene> make_anneal_scene(const std::string& name, int reso
     options.resolution = resolution;
     options.target_genus = scene->surface_genus;
     options.surface_probe = probe_of(*scene->projector); // as a run builds Z0
-    scene->z0 = build_initial_model(scene->surface, [&](const Vec3& p) { return inside.is_inside(p); }, options).model;
+    scene->z0 = build_initial_model(
+                    scene->surface, [&](const Vec3& p) { return inside.is_inside(p); }, options)
+                    .model;
     scene->context = std::make_unique<SurfaceContext>(*scene->projector, scene->z0.transform);
     return scene;
 }

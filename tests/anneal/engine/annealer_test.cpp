@@ -132,7 +132,8 @@ TEST(Annealer, OperatorWeightsDecideWhatIsProposed)
             EXPECT_EQ(r.stats.per_operator[k].proposed, 0u) << operator_name(kind);
         }
     }
-    const double movnode = static_cast<double>(r.stats.per_operator[static_cast<size_t>(OperatorKind::MovNode)].proposed);
+    const double movnode =
+        static_cast<double>(r.stats.per_operator[static_cast<size_t>(OperatorKind::MovNode)].proposed);
     EXPECT_NEAR(movnode / static_cast<double>(r.stats.proposals), 0.75, 0.03);
     const ValidationReport report = validate(from_model(r.model));
     EXPECT_TRUE(report.ok()) << report.message();

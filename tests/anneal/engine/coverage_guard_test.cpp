@@ -37,7 +37,8 @@ TEST(CoverageGuard, SamplesCoverTheSurfaceAtTheirSpacing)
     // Z0 lies within a voxel of S: every sample has a node in reach at the start.
     EXPECT_EQ(guard.uncovered(), 0u);
     EXPECT_EQ(guard.recount(mesh).size(), guard.sample_count());
-    for (size_t i = 0; i < guard.sample_count(); ++i) ASSERT_EQ(guard.count(i), guard.recount(mesh)[i]);
+    for (size_t i = 0; i < guard.sample_count(); ++i)
+        ASSERT_EQ(guard.count(i), guard.recount(mesh)[i]);
 }
 
 TEST(CoverageGuard, OffAdmitsEverythingAndHoldsNoSamples)
@@ -86,18 +87,21 @@ TEST(CoverageGuard, RefusesExactlyTheChangesThatUncoverASample)
         apply_proposal(after, p);
         const std::vector<uint32_t> recounted = guard.recount(after);
         bool uncovers = false;
-        for (size_t i = 0; i < before.size(); ++i) uncovers = uncovers || (before[i] > 0 && recounted[i] == 0);
+        for (size_t i = 0; i < before.size(); ++i)
+            uncovers = uncovers || (before[i] > 0 && recounted[i] == 0);
         const bool admitted = guard.admit(mesh, p.change);
         ASSERT_EQ(admitted, !uncovers) << "operator " << static_cast<int>(kind);
         if (!admitted)
         {
             ++refused;
-            for (size_t i = 0; i < before.size(); ++i) ASSERT_EQ(guard.count(i), before[i]) << "a refusal changed counts";
+            for (size_t i = 0; i < before.size(); ++i)
+                ASSERT_EQ(guard.count(i), before[i]) << "a refusal changed counts";
             continue;
         }
         mesh = std::move(after);
         admitted_with_removals += p.change.removed_nodes().empty() ? 0 : 1;
-        for (size_t i = 0; i < recounted.size(); ++i) ASSERT_EQ(guard.count(i), recounted[i]);
+        for (size_t i = 0; i < recounted.size(); ++i)
+            ASSERT_EQ(guard.count(i), recounted[i]);
     }
     EXPECT_GT(refused, 0);
     EXPECT_GE(admitted_with_removals, 300);

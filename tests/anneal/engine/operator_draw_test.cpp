@@ -27,7 +27,8 @@ TEST(OperatorDraw, FrequenciesFollowTheWeightsAndZeroIsNeverDrawn)
     Rng rng(5);
     std::array<int, kOperatorKinds> counts{};
     constexpr int kDraws = 120000;
-    for (int i = 0; i < kDraws; ++i) ++counts[static_cast<size_t>(draw.draw(rng))];
+    for (int i = 0; i < kDraws; ++i)
+        ++counts[static_cast<size_t>(draw.draw(rng))];
     EXPECT_EQ(counts[static_cast<size_t>(OperatorKind::FlipDiag)], 0);
     for (int k = 0; k < kOperatorKinds; ++k)
     {

@@ -17,7 +17,7 @@ TEST(AnnealParallel, PauseBarrierRunsMaintenanceAlone)
     std::atomic<bool> stop{false};
     std::atomic<int> inside{kWorkers}; // workers between two barrier passes, doing "work"
     std::atomic<int> maintenances{0};
-    bool overlap = false;       // written only by the maintenance (alone by contract)
+    bool overlap = false; // written only by the maintenance (alone by contract)
     std::vector<std::thread> threads;
     for (int w = 0; w < kWorkers; ++w)
         threads.emplace_back([&, w] {
@@ -43,7 +43,8 @@ TEST(AnnealParallel, PauseBarrierRunsMaintenanceAlone)
             inside.fetch_sub(1);
             barrier.leave([] {});
         });
-    for (auto& t : threads) t.join();
+    for (auto& t : threads)
+        t.join();
     EXPECT_FALSE(overlap);
     EXPECT_GE(maintenances.load(), kRounds);
 }
@@ -64,7 +65,8 @@ TEST(AnnealParallel, PauseBarrierReleasesWaitersOnStop)
     stop.store(true);
     barrier.wake_all();
     barrier.leave([] {});
-    for (auto& t : waiters) t.join();
+    for (auto& t : waiters)
+        t.join();
     EXPECT_EQ(returned.load(), 2);
 }
 

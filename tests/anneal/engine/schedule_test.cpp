@@ -88,7 +88,8 @@ TEST(Metropolis, DownhillAlwaysUphillWithBoltzmannProbability)
     Rng rng(11);
     const int n = 400000;
     int accepted = 0;
-    for (int i = 0; i < n; ++i) accepted += metropolis_accept(0.7, 0.5, rng.uniform01());
+    for (int i = 0; i < n; ++i)
+        accepted += metropolis_accept(0.7, 0.5, rng.uniform01());
     const double p = std::exp(-0.7 / 0.5);
     EXPECT_NEAR(static_cast<double>(accepted) / n, p, 5.0 * std::sqrt(p * (1 - p) / n));
 }
@@ -97,7 +98,8 @@ TEST(DeltaSpread, PopulationStdevInSampleOrder)
 {
     DeltaSpread s;
     EXPECT_EQ(s.stdev(), 0.0);
-    for (double x : {2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0}) s.add(x);
+    for (double x : {2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0})
+        s.add(x);
     s.add(NAN); // ignored
     EXPECT_EQ(s.count(), 8);
     EXPECT_NEAR(s.stdev(), 2.0, 1e-15);

@@ -12,10 +12,8 @@
 #include "tests/anneal/operators/operator_test_support.h"
 #include "tests/support/zome_fixtures.h"
 
-namespace zomeify
-{
-namespace
-{
+namespace zomeify {
+namespace {
 
 using detail::Fill;
 
@@ -26,7 +24,8 @@ struct Outcome
     Proposal proposal;
 };
 
-template <class Op> Outcome run(ZomeMesh &mesh, Op op, bool apply = true)
+template <class Op>
+Outcome run(ZomeMesh& mesh, Op op, bool apply = true)
 {
     Outcome out;
     Claims claims;
@@ -42,28 +41,28 @@ template <class Op> Outcome run(ZomeMesh &mesh, Op op, bool apply = true)
     return out;
 }
 
-void expect_valid(const ZomeMesh &mesh, int genus)
+void expect_valid(const ZomeMesh& mesh, int genus)
 {
     const ValidationReport report = validate(mesh);
     EXPECT_TRUE(report.ok()) << report.message();
     EXPECT_EQ(report.genus, genus);
 }
 
-Vertex node_at(const ZomeMesh &mesh, const ZVec &p)
+Vertex node_at(const ZomeMesh& mesh, const ZVec& p)
 {
     const Vertex v = mesh.find_vertex(p);
     EXPECT_TRUE(v.is_valid());
     return v;
 }
 
-Face first_face(const ZomeMesh &mesh)
+Face first_face(const ZomeMesh& mesh)
 {
     for (MeshIndex i = 0;; ++i)
         if (mesh.is_valid(Face(i)))
             return Face(i);
 }
 
-std::vector<ZVec> corners(const ZomeMesh &mesh, Face f)
+std::vector<ZVec> corners(const ZomeMesh& mesh, Face f)
 {
     std::vector<ZVec> c;
     for (Vertex v : face_vertices(mesh, f))
@@ -91,15 +90,14 @@ TEST(Operators, AddDiagRemDiagFlipDiagOnARhombus)
 
     // ADDDIAG from corner 0: q0–q2, faces (q0, q1, q2) and (q2, q3, q0).
     Outcome add =
-        run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch) { return detail::add_diag_at(mesh, f, 0, c, fill, ch); });
+        run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) { return detail::add_diag_at(mesh, f, 0, c, fill, ch); });
     ASSERT_EQ(add.rejection, Rejection::None);
     expect_valid(mesh, 0);
     EXPECT_EQ(mesh.n_faces(), 7u);
     EXPECT_EQ(mesh.n_edges(), 13u);
     const Halfedge diag = mesh.find_halfedge(node_at(mesh, q[0]), node_at(mesh, q[2]));
     ASSERT_TRUE(diag.is_valid());
-    auto rotated = [](std::vector<ZVec> c)
-    {
+    auto rotated = [](std::vector<ZVec> c) {
         std::rotate(c.begin(), std::min_element(c.begin(), c.end()), c.end());
         return c;
     };
@@ -112,8 +110,8 @@ TEST(Operators, AddDiagRemDiagFlipDiagOnARhombus)
     EXPECT_EQ(test::face_set(mesh), with_triangles);
 
     // FLIPDIAG of q0–q2 gives q1–q3: faces (q1, q2, q3) and (q3, q0, q1).
-    Outcome flip = run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch)
-                       { return detail::flip_diag_at(mesh, diag, c, fill, ch); });
+    Outcome flip = run(
+        mesh, [&](Claims& c, Fill& fill, LocalChange& ch) { return detail::flip_diag_at(mesh, diag, c, fill, ch); });
     ASSERT_EQ(flip.rejection, Rejection::None);
     expect_valid(mesh, 0);
     EXPECT_FALSE(mesh.find_edge(node_at(mesh, q[0]), node_at(mesh, q[2])).is_valid());
@@ -126,8 +124,8 @@ TEST(Operators, AddDiagRemDiagFlipDiagOnARhombus)
     EXPECT_EQ(test::face_set(mesh), flipped);
 
     // REMDIAG of q1–q3 restores the rhombus.
-    Outcome rem = run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch)
-                      { return detail::rem_diag_at(mesh, other, c, fill, ch); });
+    Outcome rem = run(
+        mesh, [&](Claims& c, Fill& fill, LocalChange& ch) { return detail::rem_diag_at(mesh, other, c, fill, ch); });
     ASSERT_EQ(rem.rejection, Rejection::None);
     expect_valid(mesh, 0);
     EXPECT_EQ(test::face_set(mesh), original);
@@ -140,8 +138,9 @@ TEST(Operators, AddDiagRefusesADiagonalThatIsNoZomeVector)
     const Face f = first_face(mesh);
     for (size_t corner = 0; corner < 2; ++corner)
     {
-        const Outcome out = run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch)
-                                { return detail::add_diag_at(mesh, f, corner, c, fill, ch); });
+        const Outcome out = run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) {
+            return detail::add_diag_at(mesh, f, corner, c, fill, ch);
+        });
         EXPECT_EQ(out.rejection, Rejection::NoCandidate);
     }
 }
@@ -151,11 +150,11 @@ TEST(Operators, RemDiagRefusesATriangleNextToAQuad)
     ZomeMesh mesh = from_model(test::rhombic_cell());
     const Face f = first_face(mesh);
     const std::vector<ZVec> q = corners(mesh, f);
-    run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch) { return detail::add_diag_at(mesh, f, 0, c, fill, ch); });
+    run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) { return detail::add_diag_at(mesh, f, 0, c, fill, ch); });
     // q0–q1 has the triangle (q0, q1, q2) on one side and a rhombus on the other: 5 corners.
     const Halfedge h = mesh.find_halfedge(node_at(mesh, q[0]), node_at(mesh, q[1]));
     const Outcome out =
-        run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch) { return detail::rem_diag_at(mesh, h, c, fill, ch); });
+        run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) { return detail::rem_diag_at(mesh, h, c, fill, ch); });
     EXPECT_EQ(out.rejection, Rejection::FaceSize);
 }
 
@@ -166,11 +165,11 @@ TEST(Operators, TetrahedronRefusesDoubleStrutsAndLowValence)
     const Halfedge h = ZomeMesh::halfedge(Edge(0), 0);
     // FLIPDIAG: the other two nodes are already joined.
     Outcome flip =
-        run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch) { return detail::flip_diag_at(mesh, h, c, fill, ch); });
+        run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) { return detail::flip_diag_at(mesh, h, c, fill, ch); });
     EXPECT_EQ(flip.rejection, Rejection::DoubleStrut);
     // REMDIAG: both ends would keep two struts.
     Outcome rem =
-        run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch) { return detail::rem_diag_at(mesh, h, c, fill, ch); });
+        run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) { return detail::rem_diag_at(mesh, h, c, fill, ch); });
     EXPECT_EQ(rem.rejection, Rejection::Valence);
     // REMNODE: the remaining triangle's corners would keep two struts each.
     Rng rng(1);
@@ -197,8 +196,8 @@ TEST(Operators, InsNodeRefusesTwoLinkNodesInOneDirection)
         if (vector_size(id) == 2)
             continue;
         const ZVec p = vector_size(id) == 0 ? q[a] - d.times_phi() : q[a] - d.div_phi();
-        const Outcome out = run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch)
-                                { return detail::ins_node_at(mesh, f, p, c, fill, ch); });
+        const Outcome out = run(
+            mesh, [&](Claims& c, Fill& fill, LocalChange& ch) { return detail::ins_node_at(mesh, f, p, c, fill, ch); });
         EXPECT_EQ(out.rejection, Rejection::SlotConflict);
         ++tried;
     }
@@ -210,11 +209,13 @@ TEST(Operators, NewNodesNeedFreePositions)
     ZomeMesh mesh = from_model(fixtures::icosahedron());
     const Face f = first_face(mesh);
     const Vertex other = Vertex(5);
-    Outcome ins = run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch)
-                      { return detail::ins_node_at(mesh, f, mesh.position(other), c, fill, ch); });
+    Outcome ins = run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) {
+        return detail::ins_node_at(mesh, f, mesh.position(other), c, fill, ch);
+    });
     EXPECT_EQ(ins.rejection, Rejection::Occupied);
-    Outcome mov = run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch)
-                      { return detail::mov_node_to(mesh, Vertex(0), mesh.position(other), c, fill, ch); });
+    Outcome mov = run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) {
+        return detail::mov_node_to(mesh, Vertex(0), mesh.position(other), c, fill, ch);
+    });
     EXPECT_EQ(mov.rejection, Rejection::Occupied);
 }
 
@@ -226,15 +227,16 @@ TEST(Operators, InsNodeAtTheIcosahedronCentreConnectsAllThreeCorners)
     const std::vector<ZVec> t = corners(mesh, f);
     // The origin is inside the solid, but the operator only sees the face's link: three new
     // triangles (o, a, b), (o, b, c), (o, c, a) replace (a, b, c).
-    const Outcome out = run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch)
-                            { return detail::ins_node_at(mesh, f, ZVec{}, c, fill, ch); });
+    const Outcome out = run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) {
+        return detail::ins_node_at(mesh, f, ZVec{}, c, fill, ch);
+    });
     ASSERT_EQ(out.rejection, Rejection::None);
     expect_valid(mesh, 0);
     EXPECT_EQ(mesh.n_vertices(), 13u);
     EXPECT_EQ(mesh.n_faces(), 22u);
     const Vertex o = node_at(mesh, ZVec{});
     EXPECT_EQ(mesh.valence(o), 3u);
-    for (const ZVec &corner : t)
+    for (const ZVec& corner : t)
     {
         const Halfedge h = mesh.find_halfedge(o, node_at(mesh, corner));
         ASSERT_TRUE(h.is_valid());
@@ -257,8 +259,9 @@ TEST(Operators, SplitStrutAtTheCentreThenRemNode)
     ZomeMesh mesh = from_model(fixtures::icosahedron());
     const Halfedge h = ZomeMesh::halfedge(Edge(0), 0);
     const ZVec a = mesh.position(mesh.from_vertex(h)), b = mesh.position(mesh.to_vertex(h));
-    const Outcome out = run(mesh, [&](Claims &c, Fill &fill, LocalChange &ch)
-                            { return detail::split_strut_at(mesh, h, ZVec{}, c, fill, ch); });
+    const Outcome out = run(mesh, [&](Claims& c, Fill& fill, LocalChange& ch) {
+        return detail::split_strut_at(mesh, h, ZVec{}, c, fill, ch);
+    });
     ASSERT_EQ(out.rejection, Rejection::None);
     expect_valid(mesh, 0);
     EXPECT_EQ(mesh.n_vertices(), 13u);
@@ -335,7 +338,7 @@ TEST(Operators, ProposalsClaimEverythingTheEnergyReads)
         claims.take(seed);
         if (!propose(kind, mesh, seed, rng, claims, p))
             continue;
-        const LocalChange &c = p.change;
+        const LocalChange& c = p.change;
         std::vector<Vertex> ends;
         for (Face f : c.removed_faces())
             for (Vertex v : face_vertices(mesh, f))
@@ -345,8 +348,8 @@ TEST(Operators, ProposalsClaimEverythingTheEnergyReads)
         for (Edge e : c.removed_struts())
             for (int i = 0; i < 2; ++i)
                 ends.push_back(mesh.vertex(e, i));
-        for (const NewStrut &s : c.added_struts())
-            for (const ZVec &q : {s.a, s.b})
+        for (const NewStrut& s : c.added_struts())
+            for (const ZVec& q : {s.a, s.b})
                 if (const Vertex v = mesh.find_vertex(q); v.is_valid())
                     ends.push_back(v);
         for (Vertex v : ends)
@@ -404,8 +407,9 @@ TEST(Operators, LinksThatVisitANodeTwiceAreRefused)
             const bool simple = is_simple_loop(link);
             const Outcome out = run(
                 mesh,
-                [&](Claims &c, Fill &fill, LocalChange &ch)
-                { return detail::split_strut_at(mesh, ZomeMesh::halfedge(Edge(e), 0), ZVec{}, c, fill, ch); },
+                [&](Claims& c, Fill& fill, LocalChange& ch) {
+                    return detail::split_strut_at(mesh, ZomeMesh::halfedge(Edge(e), 0), ZVec{}, c, fill, ch);
+                },
                 /*apply=*/false);
             EXPECT_EQ(out.rejection == Rejection::LinkTwice, !simple);
             twice_struts += simple ? 0 : 1;

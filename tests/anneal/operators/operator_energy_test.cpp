@@ -15,10 +15,8 @@
 #include "tests/anneal/operators/operator_test_support.h"
 #include "tests/support/paths.h"
 
-namespace zomeify
-{
-namespace
-{
+namespace zomeify {
+namespace {
 
 // Every step is checked against two full recomputations; under a sanitizer (10x slower) fewer
 // steps per kind still reach every operator.

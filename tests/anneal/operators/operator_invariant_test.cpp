@@ -27,10 +27,8 @@
 #define ZOME_SLOW_BUILD 1
 #endif
 
-namespace zomeify
-{
-namespace
-{
+namespace zomeify {
+namespace {
 
 #ifdef ZOME_SLOW_BUILD
 constexpr long kDefaultOps = 100000;
@@ -51,7 +49,7 @@ struct KindStats
 
 // Keeps the model between half and twice its initial size: above 1.5× the node-adding kinds are
 // replaced by REMNODE, below 0.75× REMNODE is replaced by INSNODE.
-OperatorKind pick_kind(Rng &rng, size_t nodes, size_t initial)
+OperatorKind pick_kind(Rng& rng, size_t nodes, size_t initial)
 {
     auto kind = static_cast<OperatorKind>(rng.below(kOperatorKinds));
     if (2 * nodes > 3 * initial && (kind == OperatorKind::InsNode || kind == OperatorKind::SplitStrut))
@@ -62,7 +60,7 @@ OperatorKind pick_kind(Rng &rng, size_t nodes, size_t initial)
 }
 
 // Quads whose diagonal is also a strut (two faces folded onto each other; never buildable).
-size_t folded_quads(const ZomeMesh &mesh)
+size_t folded_quads(const ZomeMesh& mesh)
 {
     size_t folded = 0;
     for (Face f : faces(mesh))
@@ -93,7 +91,7 @@ TEST(OperatorInvariants, RandomApplicationsKeepEveryInvariant)
     const long validate_every = std::max(1L, test::env_count("ZOME_VALIDATE_EVERY", kValidateEvery));
     std::array<KindStats, kOperatorKinds> stats{};
     Proposal p;
-    for (const fixtures::NamedModel &named : models)
+    for (const fixtures::NamedModel& named : models)
     {
         SCOPED_TRACE(named.name);
         ZomeMesh mesh = from_model(named.model);
@@ -105,7 +103,7 @@ TEST(OperatorInvariants, RandomApplicationsKeepEveryInvariant)
         {
             ASSERT_LT(++attempts, 200 * per_model + 100000) << "too few valid proposals";
             const OperatorKind kind = pick_kind(rng, mesh.n_vertices(), initial);
-            KindStats &s = stats[static_cast<size_t>(kind)];
+            KindStats& s = stats[static_cast<size_t>(kind)];
             ++s.proposed;
             if (!test::propose_at(kind, mesh, test::random_node(mesh, rng), rng, p))
             {
@@ -121,8 +119,8 @@ TEST(OperatorInvariants, RandomApplicationsKeepEveryInvariant)
                 ASSERT_TRUE(report.ok()) << "after " << applied << " applications, last " << operator_name(kind) << ": "
                                          << report.message();
                 ASSERT_EQ(report.genus, named.genus) << "after " << applied << " applications";
-                ASSERT_EQ(folded_quads(mesh), 0u) << "after " << applied << " applications, last "
-                                                  << operator_name(kind);
+                ASSERT_EQ(folded_quads(mesh), 0u)
+                    << "after " << applied << " applications, last " << operator_name(kind);
             }
             if (mesh.n_vertices() * 4 < mesh.vertices_size())
                 mesh.garbage_collection();
@@ -133,7 +131,7 @@ TEST(OperatorInvariants, RandomApplicationsKeepEveryInvariant)
     std::printf("[ kinds    ] %-10s %10s %10s  rejections\n", "kind", "proposed", "applied");
     for (int k = 0; k < kOperatorKinds; ++k)
     {
-        const KindStats &s = stats[static_cast<size_t>(k)];
+        const KindStats& s = stats[static_cast<size_t>(k)];
         std::string reasons;
         for (int r = 1; r < kRejectionKinds; ++r)
             if (s.rejected[static_cast<size_t>(r)] > 0)

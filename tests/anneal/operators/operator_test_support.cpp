@@ -11,17 +11,16 @@
 #include "tests/support/paths.h"
 #include "tests/support/zome_fixtures.h"
 
-namespace zomeify::test
-{
+namespace zomeify::test {
 
-bool propose_at(OperatorKind kind, const ZomeMesh &mesh, Vertex seed, Rng &rng, Proposal &out)
+bool propose_at(OperatorKind kind, const ZomeMesh& mesh, Vertex seed, Rng& rng, Proposal& out)
 {
     Claims claims;
     claims.take(seed);
     return propose(kind, mesh, seed, rng, claims, out);
 }
 
-Vertex random_node(const ZomeMesh &mesh, Rng &rng)
+Vertex random_node(const ZomeMesh& mesh, Rng& rng)
 {
     for (;;)
     {
@@ -34,11 +33,11 @@ Vertex random_node(const ZomeMesh &mesh, Rng &rng)
 ZomeModel zome_tetrahedron()
 {
     const ZomeModel ico = fixtures::icosahedron();
-    const auto &f = ico.faces.front();
+    const auto& f = ico.faces.front();
     ZomeModel m;
     m.nodes = {ZVec{}, ico.nodes[f[0]], ico.nodes[f[1]], ico.nodes[f[2]]};
     m.faces = {{1, 2, 3}, {0, 2, 1}, {0, 3, 2}, {0, 1, 3}};
-    for (const auto &face : m.faces)
+    for (const auto& face : m.faces)
         for (size_t i = 0; i < face.size(); ++i)
         {
             const uint32_t a = face[i], b = face[(i + 1) % face.size()];
@@ -53,7 +52,7 @@ ZomeModel rhombic_cell()
     return fixtures::voxel_surface(fixtures::block_cells(1, 1, 1), fixtures::rhombohedral_basis());
 }
 
-SharedScene shared_scene(const std::string &mesh_name, int resolution, const ProjectionCacheOptions &cache)
+SharedScene shared_scene(const std::string& mesh_name, int resolution, const ProjectionCacheOptions& cache)
 {
     SharedScene s;
     s.projector = std::make_unique<SurfaceProjector>(load_surface(shared_path("data/meshes/" + mesh_name)));
@@ -62,7 +61,7 @@ SharedScene shared_scene(const std::string &mesh_name, int resolution, const Pro
     options.resolution = resolution;
     options.surface_probe = probe_of(*s.projector); // as a run builds Z0
     InitialModel z0 = build_initial_model(
-        s.projector->mesh(), [&](const Vec3 &p) { return inside.is_inside(p); }, options);
+        s.projector->mesh(), [&](const Vec3& p) { return inside.is_inside(p); }, options);
     if (!z0.report.valid)
         throw std::runtime_error("no manifold Z0 for " + mesh_name);
     s.z0 = std::move(z0.model);
@@ -70,7 +69,7 @@ SharedScene shared_scene(const std::string &mesh_name, int resolution, const Pro
     return s;
 }
 
-std::vector<std::vector<ZVec>> face_set(const ZomeMesh &mesh)
+std::vector<std::vector<ZVec>> face_set(const ZomeMesh& mesh)
 {
     std::vector<std::vector<ZVec>> faces;
     for (MeshIndex i = 0; i < mesh.faces_size(); ++i)
@@ -88,9 +87,9 @@ std::vector<std::vector<ZVec>> face_set(const ZomeMesh &mesh)
     return faces;
 }
 
-long env_count(const char *name, long fallback)
+long env_count(const char* name, long fallback)
 {
-    const char *s = std::getenv(name);
+    const char* s = std::getenv(name);
     return s && *s ? std::atol(s) : fallback;
 }
 

@@ -14,13 +14,12 @@
 #include "core/mesh/zome_mesh.h"
 #include "core/zome/model.h"
 
-namespace zomeify::test
-{
+namespace zomeify::test {
 
 //! propose() with only the seed claimed beforehand (single-threaded claims).
-bool propose_at(OperatorKind kind, const ZomeMesh &mesh, Vertex seed, Rng &rng, Proposal &out);
+bool propose_at(OperatorKind kind, const ZomeMesh& mesh, Vertex seed, Rng& rng, Proposal& out);
 //! A uniformly random live node (the mesh may hold deleted elements).
-Vertex random_node(const ZomeMesh &mesh, Rng &rng);
+Vertex random_node(const ZomeMesh& mesh, Rng& rng);
 
 //! The tetrahedron of the origin and one face of the R0 icosahedron (Zome struts, valence 3).
 ZomeModel zome_tetrahedron();
@@ -34,13 +33,13 @@ struct SharedScene
     std::unique_ptr<SurfaceProjector> projector;
     std::unique_ptr<SurfaceContext> context;
 };
-SharedScene shared_scene(const std::string &mesh_name, int resolution, const ProjectionCacheOptions &cache = {});
+SharedScene shared_scene(const std::string& mesh_name, int resolution, const ProjectionCacheOptions& cache = {});
 
 //! The sorted list of faces, each as its corner positions rotated to start at the smallest
 //! (orientation kept): equal for meshes with the same faces regardless of handles.
-std::vector<std::vector<ZVec>> face_set(const ZomeMesh &mesh);
+std::vector<std::vector<ZVec>> face_set(const ZomeMesh& mesh);
 
 //! The environment variable `name` as a number if set, else `fallback`.
-long env_count(const char *name, long fallback);
+long env_count(const char* name, long fallback);
 
 } // namespace zomeify::test

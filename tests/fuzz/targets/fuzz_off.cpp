@@ -2,7 +2,4 @@
 #include "tests/fuzz/fuzz_mesh.h"
 #include "tests/fuzz/fuzz_target.h"
 
-ZOME_FUZZ_TARGET(off)
-{
-    return zomeify::fuzz::fuzz_mesh_input(data, size, "input.off");
-}
+ZOME_FUZZ_TARGET(off) { return zomeify::fuzz::fuzz_mesh_input(data, size, "input.off"); }

@@ -15,9 +15,9 @@ ZOME_FUZZ_TARGET(share_link)
     ZomeModel model;
     try
     {
-        model = decode_share_link(std::string_view(reinterpret_cast<const char *>(data), size));
+        model = decode_share_link(std::string_view(reinterpret_cast<const char*>(data), size));
     }
-    catch (const InvalidInputError &)
+    catch (const InvalidInputError&)
     {
         return 0;
     }

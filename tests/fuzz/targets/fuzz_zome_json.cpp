@@ -11,13 +11,13 @@ ZOME_FUZZ_TARGET(zome_json)
     ZomeModel model;
     try
     {
-        model = read_zome_json(std::string_view(reinterpret_cast<const char *>(data), size));
+        model = read_zome_json(std::string_view(reinterpret_cast<const char*>(data), size));
     }
-    catch (const InvalidInputError &)
+    catch (const InvalidInputError&)
     {
         return 0;
     }
-    catch (const OverflowError &)
+    catch (const OverflowError&)
     {
         return 0;
     }
