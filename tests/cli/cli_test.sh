@@ -2,7 +2,11 @@
 # CLI contract tests (design.md §5): outputs, exit status, one-line errors on bad input.
 # Usage: cli_test.sh SHARED_DIR ZOMEIFY_COMMAND... (e.g. "node --no-experimental-fetch zomeify.js")
 set -u
-shared=$1; shift
+shared=${ZOMEIFY_SHARED:-$1}; shift
+if [ ! -d "$shared/data" ]; then # a user's clone without ../shared: skipped (ctest SKIP_RETURN_CODE), not failed
+  echo "skipped: the CLI contract reads meshes and models from $shared/data, which is absent (set ZOMEIFY_SHARED)"
+  exit 77
+fi
 here=$(cd "$(dirname "$0")" && pwd)
 cli=("$@")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT

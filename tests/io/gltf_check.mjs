@@ -12,7 +12,13 @@ import validator from 'gltf-validator';
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 
-const [zomeify, shared] = process.argv.slice(2);
+const [zomeify, sharedArg] = process.argv.slice(2);
+const shared = process.env.ZOMEIFY_SHARED || sharedArg;
+if (!fs.existsSync(path.join(shared, 'data'))) {
+  // A user's clone without ../shared: skipped (ctest SKIP_RETURN_CODE), not failed.
+  console.log(`skipped: the GLB checks read models from ${path.join(shared, 'data')}, which is absent (set ZOMEIFY_SHARED)`);
+  process.exit(77);
+}
 const here = path.dirname(fileURLToPath(import.meta.url));
 const tmp = fs.mkdtempSync(path.join(os.tmpdir(), 'zomeify-gltf-'));
 const models = {
