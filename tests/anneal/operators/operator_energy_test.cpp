@@ -1,9 +1,8 @@
 // For every operator kind, the incremental ΔE of a proposal (EnergyState::simulate +
 // delta_energy) equals a full recomputation of the energy after apply_proposal(), and after
 // EnergyState::commit the state's sums equal a fresh evaluation (reset()) bit for bit. On Z0 of
-// the shared torus, with the real surface context. Also prints proposals/s per kind.
+// the shared torus, with the real surface context. Proposals/s per kind: tests/bench/bench_operators.
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -86,75 +85,6 @@ TEST(OperatorEnergy, SurfaceTermIncrementalEqualsFullRecomputationForEveryKind)
 {
     ZOME_REQUIRE_SHARED();
     check_every_kind(10.0);
-}
-
-// A quick figure, printed and not asserted: propose() + simulate + delta_energy per kind on Z0
-// of the torus after 2000 random applications (a mix of triangles, quads and valences), with a
-// projection cache of `cache_capacity` entries.
-void print_rates(size_t cache_capacity)
-{
-    ProjectionCacheOptions cache;
-    cache.capacity = cache_capacity;
-    const test::SharedScene scene = test::shared_scene("torus.obj", 12, cache);
-    ZomeMesh mesh = from_model(scene.z0);
-    Rng rng(5);
-    Proposal p;
-    for (int applied = 0; applied < 2000;)
-    {
-        const auto kind = static_cast<OperatorKind>(rng.below(kOperatorKinds));
-        if (test::propose_at(kind, mesh, test::random_node(mesh, rng), rng, p))
-        {
-            apply_proposal(mesh, p);
-            ++applied;
-        }
-    }
-    mesh.garbage_collection();
-    const EnergyOptions options = options_for(mesh.n_vertices());
-    const EnergyState state(mesh, *scene.context, options);
-    constexpr int kProposals = 20000;
-    // Pass 0 warms the projection cache (the same proposals come back: every pass of a kind
-    // uses the same random stream); pass 1 times propose() alone, pass 2 with ΔE.
-    std::array<double, kOperatorKinds> propose_rate{};
-    std::printf("[ rate     ] %zu nodes, projection cache of %zu; per kind: proposals/s without and with ΔE "
-                "(valid share)\n",
-                mesh.n_vertices(), cache_capacity);
-    for (int pass = 0; pass < 3; ++pass)
-    {
-        for (int k = 0; k < kOperatorKinds; ++k)
-        {
-            const auto kind = static_cast<OperatorKind>(k);
-            Rng r(static_cast<uint64_t>(k));
-            int valid = 0;
-            double sink = 0.0;
-            const auto t0 = std::chrono::steady_clock::now();
-            for (int i = 0; i < kProposals; ++i)
-            {
-                Claims claims;
-                const Vertex seed = test::random_node(mesh, r);
-                claims.take(seed);
-                if (propose(kind, mesh, seed, r, claims, p))
-                {
-                    ++valid;
-                    if (pass != 1)
-                        sink += state.delta_energy(state.simulate(mesh, p.change));
-                }
-            }
-            const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-            if (pass == 1)
-                propose_rate[static_cast<size_t>(k)] = kProposals / s;
-            if (pass == 2)
-                std::printf("[ rate     ] %-10s %9.0f /s %9.0f /s  (%4.1f%% valid)%s\n",
-                            std::string(operator_name(kind)).c_str(), propose_rate[static_cast<size_t>(k)],
-                            kProposals / s, 100.0 * valid / kProposals, sink == 12345.0 ? " " : "");
-        }
-    }
-}
-
-TEST(OperatorEnergy, ProposalRatePerKind)
-{
-    ZOME_REQUIRE_SHARED();
-    print_rates(ProjectionCacheOptions().capacity); // the default
-    print_rates(size_t{1} << 22);                   // every sample of the measurement fits
 }
 
 } // namespace

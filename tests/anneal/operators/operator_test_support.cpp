@@ -8,7 +8,7 @@
 #include "core/mesh/circulators.h"
 #include "core/surface/prepare.h"
 #include "core/voxel/initial_model.h"
-#include "tests/support/paths.h"
+#include "tests/support/shared_paths.h"
 #include "tests/support/zome_fixtures.h"
 
 namespace zomeify::test {
