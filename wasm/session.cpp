@@ -115,15 +115,6 @@ nlohmann::json size_estimate(const InitialModel& z0, size_t balls)
     return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0}, {"kits", kits}, {"kit_plan", text}};
 }
 
-nlohmann::json counts_json(const PartCounts& c)
-{
-    nlohmann::json j = nlohmann::json::object();
-    for (int k = 0; k < kStrutKindCount; ++k)
-        j[std::string(kind_info(static_cast<StrutKind>(k)).name)] = c[static_cast<size_t>(k)];
-    j["balls"] = c[kStrutKindCount];
-    return j;
-}
-
 std::string owned_text(const OwnedKits& owned)
 {
     std::string s;
@@ -290,7 +281,7 @@ std::string Session::kit_check(const std::string& have, double balls) const
                            {"fits", fits(need, kits)},
                            {"text", fit_text(need, kits)},
                            {"owned", owned_text(owned)},
-                           {"missing", counts_json(missing)},
+                           {"missing", part_counts_json(missing)},
                            {"budget", balls_that_fit(kits)}};
         return out.dump();
     });

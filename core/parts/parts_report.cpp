@@ -11,15 +11,6 @@ namespace zomeify {
 
 namespace {
 
-nlohmann::json counts_json(const PartCounts& c)
-{
-    nlohmann::json j = nlohmann::json::object();
-    for (int k = 0; k < kStrutKindCount; ++k)
-        j[std::string(kind_info(static_cast<StrutKind>(k)).name)] = c[static_cast<size_t>(k)];
-    j["balls"] = c[kStrutKindCount];
-    return j;
-}
-
 std::string trim(const std::string& s)
 {
     size_t a = 0, b = s.size();
@@ -66,6 +57,15 @@ std::string parts_report_text(const PartsList& parts, const OwnedKits& owned)
     return out;
 }
 
+nlohmann::json part_counts_json(const PartCounts& c)
+{
+    nlohmann::json j = nlohmann::json::object();
+    for (int k = 0; k < kStrutKindCount; ++k)
+        j[std::string(kind_info(static_cast<StrutKind>(k)).name)] = c[static_cast<size_t>(k)];
+    j["balls"] = c[kStrutKindCount];
+    return j;
+}
+
 std::string parts_report_json(const PartsList& parts, const OwnedKits& owned)
 {
     nlohmann::json doc = nlohmann::json::parse(parts_json(parts));
@@ -73,14 +73,14 @@ std::string parts_report_json(const PartsList& parts, const OwnedKits& owned)
     nlohmann::json kits = nlohmann::json::array();
     for (const auto& [kit, n] : plan.kits)
         kits.push_back({{"kit", kit->id}, {"name", kit->name}, {"count", n}});
-    doc["kit_plan"] = {{"kits", kits}, {"parts_bought", plan.parts_bought}, {"spare", counts_json(plan.spare)}};
+    doc["kit_plan"] = {{"kits", kits}, {"parts_bought", plan.parts_bought}, {"spare", part_counts_json(plan.spare)}};
     if (!owned.empty())
     {
         nlohmann::json have = nlohmann::json::array();
         for (const auto& [kit, n] : owned)
             have.push_back({{"kit", kit->id}, {"count", n}});
         doc["owned_kits"] = have;
-        doc["missing"] = counts_json(missing_parts(parts, owned));
+        doc["missing"] = part_counts_json(missing_parts(parts, owned));
     }
     return doc.dump(2) + "\n";
 }

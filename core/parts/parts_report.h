@@ -8,6 +8,8 @@
 #include <utility>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 #include "core/parts/kits.h"
 
 namespace zomeify {
@@ -19,5 +21,7 @@ OwnedKits parse_owned_kits(const std::string& text);
 
 std::string parts_report_text(const PartsList& parts, const OwnedKits& owned);
 std::string parts_report_json(const PartsList& parts, const OwnedKits& owned);
+//! Counts by strut kind name plus "balls", as the JSON report writes them.
+nlohmann::json part_counts_json(const PartCounts& c);
 
 } // namespace zomeify
