@@ -1,6 +1,7 @@
 // kits.js and the controls' size field and kits picker: the --have text from the picker, the size's
 // range, the sentences before and after a run, and "Fit my kits" setting the form (on a fake DOM;
-// the core's answers are stubs shaped as Session::kit_check / fit_kits / estimate_size return them).
+// the core's answers are fixed fixtures in the shape Session::kit_check / fit_kits / estimate_size return;
+// e2e/kits.spec.js runs the same page against the real core).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { haveText, ownedName, checkSize, estimateFitText, resultFitText, missingText, fitPlanText, SIZE_CM } from '../src/kits.js';
