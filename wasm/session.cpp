@@ -24,6 +24,7 @@
 #include "core/parts/parts_report.h"
 #include "core/pipeline/kit_fit_plan.h"
 #include "core/pipeline/pipeline.h"
+#include "core/pipeline/z0_choice.h"
 #include "core/surface/read_mesh.h"
 #include "core/surface/report_text.h"
 #include "core/voxel/advisor.h"
@@ -87,14 +88,10 @@ std::string guarded(F&& body)
     }
 }
 
+// Z0 as a run builds it (z0_choice.h), so the estimate's ball count is the run's starting model.
 InitialModelOptions z0_options(int resolution, long long genus, const SurfaceProjector& projector, double b1 = 0.0)
 {
-    InitialModelOptions o;
-    o.resolution = resolution;
-    o.b1 = b1;
-    o.target_genus = genus;
-    o.surface_probe = probe_of(projector); // as the pipeline's run builds Z0
-    return o;
+    return run_z0_options(projector, genus, resolution, b1);
 }
 
 // A rough bill for a finished model of `balls` balls from Z0 across `cells` B1 cells: its size at

@@ -170,6 +170,8 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
         s << "; nudged grid " << z0.attempt_used << " (cell x" << z0.layout.scale_factor << ") used";
     if (z0.attempts > 1)
         s << "; " << z0.attempts << " grids tried";
+    if (z0.carve_topology == CarveTopology::Free)
+        s << "; carved freely (cells bridging a hole removed) to reach the surface's genus";
     s << std::setprecision(3) << "; " << r.initial_seconds << " s.";
     if (r.automatic)
         s << " Resolution chosen automatically: " << r.automatic->message << ".";

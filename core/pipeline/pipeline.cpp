@@ -11,6 +11,7 @@
 #include "core/geom/inside.h"
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
+#include "core/pipeline/z0_choice.h"
 #include "core/voxel/advisor.h"
 
 namespace zomeify {
@@ -55,16 +56,10 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
     PipelineResult r;
     r.surface_genus = surface_genus;
 
-    InitialModelOptions z0_options;
-    // A grid a few percent off (a nudge) often keeps a handle the exact grid closes or bridges.
-    z0_options.target_genus = surface_genus;
-    z0_options.resolution = options.resolution;
-    z0_options.b1 = options.b1;
-
     const SurfaceProjector projector(surface);
     const InsideTest inside(projector);
     const InsidePredicate is_inside = [&](const Vec3& p) { return inside.is_inside(p); };
-    z0_options.surface_probe = probe_of(projector);
+    InitialModelOptions z0_options = run_z0_options(projector, surface_genus, options.resolution, options.b1);
     if (options.b1 == 0.0 && options.resolution == kAutoResolution)
     {
         AutoResolutionOptions automatic;

@@ -102,7 +102,8 @@ SurfaceProbeAt probe_of(const SurfaceProjector& projector)
     };
 }
 
-CarveReport carve_outside_cells(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe)
+CarveReport carve_outside_cells(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe,
+                                CarveTopology topology)
 {
     CarveReport report;
     const auto& d = grid.dims();
@@ -130,7 +131,7 @@ CarveReport carve_outside_cells(VoxelGrid& grid, const InsidePredicate& inside, 
         size_t removed = 0;
         for (const CellIndex& c : layer)
         {
-            if (!is_simple(neighbourhood(grid, c.i, c.j, c.k)))
+            if (topology == CarveTopology::Keep && !is_simple(neighbourhood(grid, c.i, c.j, c.k)))
                 continue;
             const Cell was = grid.at(c.i, c.j, c.k);
             grid.set(c.i, c.j, c.k, Cell::Empty);

@@ -36,11 +36,24 @@ struct CarveReport
     int passes = 0;               //!< layers peeled (the last one removed nothing)
 };
 
+//! How carving treats topology.
+enum class CarveTopology
+{
+    //! Only simple cells go: object and background keep their topology, so the genus is kept.
+    Keep,
+    //! Any outside cell may go if its corners stay manifold: a block of cells bridging a hole of S
+    //! (which the simple rule must keep, because it holds a tunnel on each side) opens, and a thin
+    //! membrane closing a handle of S is pierced. The genus may change either way, so the caller
+    //! judges the result (build_initial_model() keeps it only when it has the genus of S).
+    Free,
+};
+
 //! Carves `grid` (which must be manifold: repair_manifold() first). `inside` classifies cell centres.
 //! With `probe`, two guards: a cell stays when S passes through it more than half a cell from the
 //! cells that would remain (the tip of a thin leg: carving it would shorten the leg), and carved
 //! cells across which the result shows a face turned against S's normal (a fold-over: the model lies
 //! across a thin part there) are put back where the topology allows.
-CarveReport carve_outside_cells(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe = nullptr);
+CarveReport carve_outside_cells(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe = nullptr,
+                                CarveTopology topology = CarveTopology::Keep);
 
 } // namespace zomeify

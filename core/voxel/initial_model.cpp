@@ -90,6 +90,7 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
             continue;
         }
         rep.carve = {};
+        rep.carve_topology = CarveTopology::Keep;
         Extraction ex = extract_boundary(grid);
         out.model = std::move(ex.model);
         rep.topology = ex.topology;
@@ -101,6 +102,24 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
         }
         std::ostringstream note;
         note << describe(rep.grid, rep.layout) << ": genus " << rep.topology.genus << ", not " << options.target_genus;
+        if (options.free_carving && options.carve && carve_inside)
+        {
+            VoxelGrid freed = grid;
+            const CarveReport carved =
+                carve_outside_cells(freed, *carve_inside, options.surface_probe, CarveTopology::Free);
+            Extraction fx = extract_boundary(freed);
+            if (fx.topology.genus == options.target_genus && fx.topology.components == 1)
+            {
+                first_valid.reset();
+                rep.carve = carved;
+                rep.carve_topology = CarveTopology::Free;
+                rep.voxels = freed.occupied_count();
+                out.model = std::move(fx.model);
+                rep.topology = fx.topology;
+                break;
+            }
+            note << " (carved freely: genus " << fx.topology.genus << ", " << fx.topology.components << " components)";
+        }
         rep.notes.push_back(note.str());
         if (!first_valid)
             first_valid = FirstValid{out, grid};

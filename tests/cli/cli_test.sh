@@ -57,7 +57,7 @@ expect_output "linked parts"      '"B2": 5,' parts "$tmp/linked.vef" --json
 # run: the whole pipeline. A proposal budget with one thread is deterministic, so two runs with the
 # same seed give the same model (compared through its parts list), natively and in wasm alike.
 mesh="$shared/data/meshes/bunny.obj"
-expect_output "run initial"     'Z0 of bunny\.obj at 8 cells .*: 216 balls' run "$mesh" --resolution 8 --initial-only -o "$tmp/z0.zome.json"
+expect_output "run initial"     'Z0 of bunny\.obj at 8 cells .*: 210 balls' run "$mesh" --resolution 8 --initial-only -o "$tmp/z0.zome.json"
 expect_output "run anneal"      'Annealed .* on 1 thread: 20000 proposals, [0-9]+ commits; E [0-9.]+ -> .*genus 0, [0-9]+ fold-overs?; no clashes.*largest gap [0-9]+ mm' \
   run "$mesh" --resolution 8 --target-nodes 392 --proposals 20000 --threads 1 --seed 3 -o "$tmp/a.zome.json" -o "$tmp/a.vef" --stats "$tmp/a.json"
 for key in '"proposals": 20000' '"genus_model": 0' '"genus_surface": 0' '"energy_sums_consistent": true' '"valid": true' \
@@ -89,7 +89,7 @@ expect_error "obj units"        "OBJ units must be 'mm' or 'm'" convert "$tmp/a.
 expect_output "vzome vef 10"    '13 balls, 42 struts' parts "$here/../data/vef/vzome10_copy.vef"
 expect_output "run 2 threads"   'on 2 threads: .*genus 0' run "$mesh" --resolution 8 --proposals 20000 --threads 2 -o "$tmp/c.zome.json"
 # No --resolution: the automatic one (core/voxel/auto_resolution.h), which `--resolution auto` names.
-expect_output "run auto res"    'Z0 of bunny\.obj at 13 cells .*Resolution chosen automatically: 13 cells \(564 balls\): the coarsest grid with at least 500 balls' \
+expect_output "run auto res"    'Z0 of bunny\.obj at 13 cells .*Resolution chosen automatically: 13 cells \(576 balls\): the coarsest grid with at least 500 balls' \
   run "$mesh" --initial-only -o "$tmp/auto.zome.json" --stats "$tmp/auto.json"
 if grep -q '"automatic_resolution"' "$tmp/auto.json"; then ok; else bad "run stats lack automatic_resolution"; fi
 expect_output "run --res auto"  'at 13 cells .*chosen automatically' run "$mesh" --resolution auto --initial-only -o "$tmp/auto.zome.json"

@@ -127,3 +127,60 @@ TEST(VoxelCarve, WithoutANormalCheckEveryOutsideCentreThatCanGoGoes)
             for (int i = 0; i < d[0]; ++i)
                 EXPECT_EQ(g.occupied(i, j, k), predicate(g.cell_centre(i, j, k))) << i << " " << j << " " << k;
 }
+
+namespace {
+
+// A square frame of 5 x 5 cells one cell thick (cells (1..5, 1..5, 1) but not the 3 x 3 inside), the
+// only cells whose centres are "inside S", with a bar of outside cells across its hole (y = 3):
+// the bar splits the one hole into two, so the object has genus 2 where S has genus 1.
+struct BridgedFrame
+{
+    VoxelGrid grid;
+    InsidePredicate inside;
+};
+
+BridgedFrame bridged_frame()
+{
+    GridSpec s;
+    s.origin = Vec3(0, 0, 0);
+    s.cell = 1.0;
+    s.dims = {7, 7, 3};
+    BridgedFrame f{VoxelGrid(s), nullptr};
+    const auto in_frame = [](int i, int j, int k) {
+        return k == 1 && i >= 1 && i <= 5 && j >= 1 && j <= 5 && (i == 1 || i == 5 || j == 1 || j == 5);
+    };
+    for (int i = 1; i <= 5; ++i)
+        for (int j = 1; j <= 5; ++j)
+            if (in_frame(i, j, 1) || j == 3)
+                f.grid.set(i, j, 1, Cell::Surface);
+    f.inside = [in_frame](const Vec3& p) {
+        return in_frame(static_cast<int>(std::floor(p[0])), static_cast<int>(std::floor(p[1])),
+                        static_cast<int>(std::floor(p[2])));
+    };
+    return f;
+}
+
+} // namespace
+
+TEST(VoxelCarve, KeepCannotOpenABarAcrossAHoleFreeCan)
+{
+    BridgedFrame keep = bridged_frame();
+    ASSERT_EQ(extract_boundary(keep.grid).topology.genus, 2);
+    const CarveReport kept = carve_outside_cells(keep.grid, keep.inside, nullptr, CarveTopology::Keep);
+    EXPECT_EQ(kept.removed, 0u) << "every bar cell holds a tunnel on each side: none is simple";
+    EXPECT_EQ(extract_boundary(keep.grid).topology.genus, 2);
+
+    BridgedFrame free = bridged_frame();
+    const CarveReport freed = carve_outside_cells(free.grid, free.inside, nullptr, CarveTopology::Free);
+    EXPECT_EQ(freed.removed, 3u);
+    const Extraction z0 = extract_boundary(free.grid);
+    EXPECT_EQ(z0.topology.genus, 1);
+    EXPECT_EQ(z0.topology.components, 1);
+    EXPECT_EQ(closed_manifold_problem(z0.model), "");
+    const auto& d = free.grid.dims();
+    for (int k = 0; k < d[2]; ++k)
+        for (int j = 0; j < d[1]; ++j)
+            for (int i = 0; i < d[0]; ++i)
+                EXPECT_EQ(free.grid.occupied(i, j, k), free.inside(free.grid.cell_centre(i, j, k)))
+                    << i << " " << j << " " << k;
+}

@@ -35,11 +35,11 @@ AnnealOptions deterministic_options(uint64_t proposals)
     return o;
 }
 
-// The canonical hash of the bunny (8 cells, Z0 of 216 nodes) after 30,000 proposals with seed 7
-// and one thread. The same constant must come out natively and in wasm; it changes legitimately
-// when an operator, the energy, the schedule or the random stream changes (then update it, once,
-// from the native run's printed value, and check that wasm agrees).
-constexpr uint64_t kBunnyGoldenHash = 0xe770a293fa7dba84ULL;
+// The canonical hash of the bunny (8 cells, Z0 of 210 nodes: the plain grid carved freely) after 30,000 proposals with
+// seed 7 and one thread. The same constant must come out natively and in wasm; it changes legitimately when an
+// operator, the energy, the schedule or the random stream changes (then update it, once, from the native run's printed
+// value, and check that wasm agrees).
+constexpr uint64_t kBunnyGoldenHash = 0x6ef8ded0e48133cfULL;
 
 TEST(Annealer, OneThreadFixedSeedIsBitIdentical)
 {
