@@ -6,6 +6,6 @@ if(ZOME_BUILD_FUZZ)
     message(FATAL_ERROR "ZOME_BUILD_FUZZ needs clang: CC=clang CXX=clang++ cmake -DZOME_BUILD_FUZZ=ON ...")
   endif()
   add_compile_options(-fsanitize=fuzzer-no-link,address,undefined -fno-sanitize-recover=all
-    -fno-omit-frame-pointer -g)
+    -fno-omit-frame-pointer -gline-tables-only)
   add_link_options(-fsanitize=address,undefined)
 endif()

@@ -22,7 +22,7 @@ Vec3 parse_vertex(TokenSplitter& tokens, size_t line)
             throw InvalidInputError(at_line(line) + "vertex has fewer than 3 coordinates");
         double value = 0;
         if (!parse_double(token, value))
-            throw InvalidInputError(at_line(line) + "bad vertex coordinate " + quoted(token));
+            throw InvalidInputError(at_line(line) + "bad vertex coordinate " + quote_token(token));
         if (!std::isfinite(value))
             throw InvalidInputError(at_line(line) + "vertex coordinate is NaN or infinite");
         p[axis] = value;
@@ -37,7 +37,7 @@ long long parse_corner(std::string_view token, size_t vertices_so_far, size_t li
     const std::string_view index = token.substr(0, token.find('/'));
     long long value = 0;
     if (!parse_int(index, value))
-        throw InvalidInputError(at_line(line) + "bad face index " + quoted(token));
+        throw InvalidInputError(at_line(line) + "bad face index " + quote_token(token));
     if (value == 0)
         throw InvalidInputError(at_line(line) + "face index 0 (OBJ indices start at 1)");
     if (value < 0)

@@ -49,7 +49,7 @@ PolygonSoup read_off(std::span<const uint8_t> bytes)
     std::string_view keyword;
     header.next(keyword);
     if (keyword.size() < 3 || keyword.substr(keyword.size() - 3) != "OFF")
-        throw InvalidInputError(at_line(lines.line_number()) + "not an OFF file (header " + quoted(keyword) + ")");
+        throw InvalidInputError(at_line(lines.line_number()) + "not an OFF file (header " + quote_token(keyword) + ")");
     if (keyword.find('4') != std::string_view::npos || keyword.find('n') != std::string_view::npos)
         throw InvalidInputError(at_line(lines.line_number()) + "only 3-dimensional OFF is supported");
     std::string_view token;

@@ -116,7 +116,7 @@ Header parse_header(std::span<const uint8_t> bytes)
             else if (a == "binary_big_endian")
                 header.encoding = Encoding::big_endian;
             else
-                throw InvalidInputError(where + "unknown PLY format " + quoted(a));
+                throw InvalidInputError(where + "unknown PLY format " + quote_token(a));
             have_format = true;
         }
         else if (keyword == "element")
@@ -153,7 +153,7 @@ Header parse_header(std::span<const uint8_t> bytes)
             header.elements.back().properties.push_back(std::move(p));
         }
         else
-            throw InvalidInputError(where + "unknown header line " + quoted(keyword));
+            throw InvalidInputError(where + "unknown header line " + quote_token(keyword));
     }
     if (!have_format)
         throw InvalidInputError("no 'format' line in the header");
@@ -202,7 +202,7 @@ private:
         }
         double v = 0;
         if (!parse_double(token, v))
-            throw InvalidInputError(at_line(lines_.line_number()) + "bad number " + quoted(token));
+            throw InvalidInputError(at_line(lines_.line_number()) + "bad number " + quote_token(token));
         return v;
     }
 

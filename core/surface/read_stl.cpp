@@ -105,7 +105,7 @@ PolygonSoup read_ascii(std::span<const uint8_t> bytes)
             soup.positions.push_back(v);
         }
         else if (keyword != "solid" && keyword != "endsolid" && keyword != "facet" && keyword != "endfacet")
-            throw InvalidInputError(at_line(n) + "unexpected " + quoted(keyword) + " in an ASCII STL file");
+            throw InvalidInputError(at_line(n) + "unexpected " + quote_token(keyword) + " in an ASCII STL file");
     }
     if (in_loop)
         throw InvalidInputError("file ends inside a facet");

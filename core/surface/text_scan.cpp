@@ -99,7 +99,7 @@ bool parse_int(std::string_view token, long long& value)
 
 std::string at_line(size_t line_number) { return "line " + std::to_string(line_number) + ": "; }
 
-std::string quoted(std::string_view token)
+std::string quote_token(std::string_view token)
 {
     // Built with append: GCC 12 warns falsely (-Wrestrict) on "'" + std::string(...).
     constexpr size_t max_shown = 24;

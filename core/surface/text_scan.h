@@ -56,6 +56,6 @@ bool parse_int(std::string_view token, long long& value);
 std::string at_line(size_t line_number);
 
 //! The token quoted and shortened for a message, with non-printable bytes shown as '?'.
-std::string quoted(std::string_view token);
+std::string quote_token(std::string_view token);
 
 } // namespace zomeify::detail
