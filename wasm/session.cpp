@@ -88,12 +88,6 @@ std::string guarded(F&& body)
     }
 }
 
-// Z0 as a run builds it (z0_choice.h), so the estimate's ball count is the run's starting model.
-InitialModelOptions z0_options(int resolution, long long genus, const SurfaceProjector& projector, double b1 = 0.0)
-{
-    return run_z0_options(projector, genus, resolution, b1);
-}
-
 // A rough bill for a finished model of `balls` balls from Z0 across `cells` B1 cells: its size at
 // real scale, and the kits to buy for the strut mix of a typical finished model (kit_fit.h's
 // typical_parts, the mix the CLI's kit estimate uses), planned as `zomeify parts` plans.
@@ -201,8 +195,9 @@ namespace {
 // the surface's, and the finished model's size and kits.
 std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface& s, int resolution, double b1 = 0.0)
 {
+    // Z0 as a run builds it (z0_choice.h), so the estimate's ball count is the run's starting model.
     InitialModel z0 =
-        build_initial_model(s.mesh, s.is_inside(), z0_options(resolution, s.report.genus, *s.projector, b1));
+        build_initial_model(s.mesh, s.is_inside(), run_z0_options(*s.projector, s.report.genus, resolution, b1));
     nlohmann::json out;
     out["ok"] = true;
     out["resolution"] = resolution;

@@ -118,7 +118,8 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
                 rep.topology = fx.topology;
                 break;
             }
-            note << " (carved freely: genus " << fx.topology.genus << ", " << fx.topology.components << " components)";
+            note << " (carved freely: genus " << fx.topology.genus << " in " << fx.topology.components
+                 << (fx.topology.components == 1 ? " component)" : " components)");
         }
         rep.notes.push_back(note.str());
         if (!first_valid)
