@@ -89,6 +89,19 @@ private:
         slab_epoch_ = epoch;
     }
 
+    // A dead seed counts no proposal, so a slab whose nodes all went (a small model, a collapsed
+    // part) would keep the epoch, and a proposal-budget run, from ever ending. After a streak of
+    // dead seeds the slab's dead ones go; with none left the seeds are drawn among all nodes.
+    // Only a streak triggers it, so runs that never see one draw exactly as before.
+    void prune_dead_seeds()
+    {
+        std::shared_lock lock(s_.commit_lock, std::defer_lock);
+        if (shared_)
+            lock.lock(); // other nodes than the claimed seed are read
+        std::erase_if(seeds_, [this](MeshIndex v) { return s_.mesh.is_deleted(Vertex(v)); });
+        dead_in_row_ = 0;
+    }
+
     // Budget, temperature and progress, once per batch. False when the budget is used.
     bool checkpoint()
     {
@@ -147,8 +160,11 @@ private:
         {
             ++totals_.dead_seeds;
             claims_->release_all();
+            if (++dead_in_row_ > 2 * seeds_.size() + kDeadSlack)
+                prune_dead_seeds();
             return;
         }
+        dead_in_row_ = 0;
         const OperatorKind kind = operators_.draw(rng_);
         OperatorCounts& counts = totals_.per_operator[static_cast<size_t>(kind)];
         ++counts.proposed;
@@ -255,6 +271,8 @@ private:
     static constexpr uint64_t kNoEpoch = ~uint64_t{0};
     std::vector<MeshIndex> seeds_; // empty: draw among all nodes
     uint64_t slab_epoch_ = kNoEpoch;
+    static constexpr size_t kDeadSlack = 64;
+    size_t dead_in_row_ = 0;
     double temperature_ = 0.0;
     uint64_t own_proposals_ = 0;
     uint64_t unflushed_proposals_ = 0, unflushed_valid_ = 0, unflushed_commits_ = 0;
