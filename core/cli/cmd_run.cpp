@@ -182,8 +182,8 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
           << (st.cancelled ? " (cancelled)" : "") << ": " << st.proposals << " proposals, " << st.commits
           << " commits; E " << std::setprecision(4) << r.anneal->start.total << " -> " << r.model_energy.total << "; "
           << r.model.nodes.size() << " balls, " << r.model.struts.size() << " struts, genus " << r.model_genus << ", "
-          << r.fold_overs << (r.fold_overs == 1 ? " fold-over; " : " fold-overs; ") << clearance_summary(r.clearance)
-          << "; " << fidelity_summary(r.fidelity) << ".";
+          << fold_over_summary(r.fold_overs) << "; " << clearance_summary(r.clearance) << "; "
+          << fidelity_summary(r.fidelity) << ".";
     }
     s << " Wrote";
     for (const std::string& out : outputs)

@@ -39,7 +39,7 @@ std::string text_report(const ModelScore& s)
                                   ", orientation " + std::to_string(s.energy.orientation) + ", fairing " +
                                   std::to_string(s.energy.fairing) + ", complexity " +
                                   std::to_string(s.energy.complexity) + ")");
-    line("fold-overs       ", std::to_string(s.fold_overs));
+    line("fold-overs       ", fold_over_summary(s.fold_overs));
     line("parts            ", clearance_summary(s.clearance));
     const Fidelity& f = s.fidelity;
     const auto both = [](double b0) { return fixed(b0, 3) + " b0 = " + fixed(b0 * kMmPerB0, 1) + " mm"; };

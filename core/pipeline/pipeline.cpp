@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/anneal/engine/fold_overs.h"
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
 #include "core/geom/closest_point.h"
@@ -12,6 +11,7 @@
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
 #include "core/pipeline/z0_choice.h"
+#include "core/score/fold_over_report.h"
 #include "core/voxel/advisor.h"
 
 namespace zomeify {
@@ -27,7 +27,7 @@ void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyO
     r.model_valid = report.ok();
     r.validation = report.message();
     r.model_genus = report.genus;
-    r.fold_overs = count_fold_overs(mesh, context);
+    r.fold_overs = fold_over_report(mesh, context);
     r.clearance = clearance_report(mesh);
     if (r.model_valid && fidelity_samples > 0)
     {

@@ -13,6 +13,7 @@
 #include "core/anneal/engine/annealer.h"
 #include "core/geom/triangle_mesh.h"
 #include "core/score/fidelity.h"
+#include "core/score/fold_over_report.h"
 #include "core/voxel/auto_resolution.h"
 #include "core/voxel/initial_model.h"
 #include "core/zome/model.h"
@@ -69,7 +70,7 @@ struct PipelineResult
     int model_genus = 0;          //!< of `model`, from validate()
     bool model_valid = false;     //!< `model` passed validate() (closed, Zome rules)
     std::string validation;       //!< validate()'s one-line message
-    size_t fold_overs = 0;        //!< faces of `model` facing against the surface normal at π(barycentre)
+    FoldOverReport fold_overs;    //!< faces of `model` facing against S's normal at π(barycentre), and where
     ClearanceReport clearance;    //!< clashes between the parts of `model` and the smallest clearances
     Fidelity fidelity;            //!< distances between `model` and the surface, both ways (core/score)
     double initial_seconds = 0.0; //!< Z0 build time

@@ -111,7 +111,8 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
     j["genus_surface"] = r.surface_genus;
     j["genus_model"] = r.model_genus;
     j["valid"] = r.model_valid;
-    j["fold_overs"] = r.fold_overs;
+    j["fold_overs"] = r.fold_overs.count();
+    j["fold_over_places"] = fold_over_places_json(r.fold_overs);
     j["clearance"] = clearance_json(r.clearance);
     if (r.model_valid)
         j["fidelity"] = fidelity_json(r.fidelity);

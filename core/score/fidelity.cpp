@@ -134,6 +134,17 @@ std::string place_in_box(const Vec3& p, const Vec3& box_min, const Vec3& box_max
     return out.empty() ? std::string("middle") : out;
 }
 
+std::string place_on_surface(const Vec3& p, const TriangleMesh& surface)
+{
+    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+    for (const Vec3& q : surface.positions)
+    {
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+    }
+    return place_in_box(p, lo, hi);
+}
+
 Fidelity measure_fidelity(const ZomeModel& model, const SurfaceProjector& surface, const FidelityOptions& options)
 {
     if (model.faces.empty())
@@ -154,13 +165,7 @@ Fidelity measure_fidelity(const ZomeModel& model, const SurfaceProjector& surfac
     f.gap_is_missed_surface = f.surface_to_model.max >= f.model_to_surface.max;
     f.hausdorff = std::max(f.surface_to_model.max, f.model_to_surface.max);
     f.largest_gap_at = f.gap_is_missed_surface ? f.surface_to_model.farthest : f.model_to_surface.farthest;
-    Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-    for (const Vec3& p : surface.mesh().positions)
-    {
-        lo = lo.cwiseMin(p);
-        hi = hi.cwiseMax(p);
-    }
-    f.where = place_in_box(f.largest_gap_at, lo, hi);
+    f.where = place_on_surface(f.largest_gap_at, surface.mesh());
     return f;
 }
 

@@ -54,6 +54,9 @@ Fidelity measure_fidelity(const ZomeModel& model, const SurfaceProjector& surfac
 //! The words for a point in a box (y up, z front, x right); "middle" at the centre.
 std::string place_in_box(const Vec3& p, const Vec3& box_min, const Vec3& box_max);
 
+//! place_in_box() in the bounding box of `surface`'s vertices.
+std::string place_on_surface(const Vec3& p, const TriangleMesh& surface);
+
 //! The figures as JSON: both ways' RMS and maximum, the symmetric RMS and Hausdorff distance, in
 //! b0 and mm, and where the largest gap is (the --stats and score --json "fidelity" object).
 nlohmann::json fidelity_json(const Fidelity& f);

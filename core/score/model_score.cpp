@@ -6,7 +6,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/anneal/energy.h"
-#include "core/anneal/engine/fold_overs.h"
 #include "core/anneal/surface_context.h"
 #include "core/base/errors.h"
 #include "core/mesh/element_ranges.h"
@@ -45,7 +44,7 @@ ModelScore score_model(const ZomeModel& model, const SurfaceProjector& surface, 
     score.clearance = clearance_report(mesh);
 
     const SurfaceContext fold_context(surface, model.transform);
-    score.fold_overs = count_fold_overs(mesh, fold_context);
+    score.fold_overs = fold_over_report(mesh, fold_context);
     score.fidelity = measure_fidelity(model, surface, options.fidelity);
     return score;
 }
@@ -65,7 +64,8 @@ std::string score_json(const ModelScore& score)
     j["energy"] = {{"total", e.total},           {"distance", e.distance}, {"orientation", e.orientation},
                    {"tangential", e.tangential}, {"normal", e.normal},     {"fairing", e.fairing},
                    {"complexity", e.complexity}};
-    j["fold_overs"] = score.fold_overs;
+    j["fold_overs"] = score.fold_overs.count();
+    j["fold_over_places"] = fold_over_places_json(score.fold_overs);
     const ClearanceReport& c = score.clearance;
     nlohmann::ordered_json clashes;
     for (int k = 1; k < kClashKinds; ++k)

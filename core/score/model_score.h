@@ -12,6 +12,7 @@
 #include "core/anneal/energy_sums.h"
 #include "core/geom/closest_point.h"
 #include "core/score/fidelity.h"
+#include "core/score/fold_over_report.h"
 #include "core/zome/model.h"
 #include "core/zome/slots.h"
 
@@ -23,7 +24,7 @@ struct ModelScore
     std::array<size_t, kStrutKindCount> struts_by_kind{};
     int genus = 0;
     EnergyTerms energy;        //!< with target_nodes = the model's own node count unless given
-    size_t fold_overs = 0;     //!< faces whose normal points against S's normal at π(barycentre)
+    FoldOverReport fold_overs; //!< faces whose normal points against S's normal at π(barycentre), and where
     Fidelity fidelity;         //!< distances both ways, in b0 (fidelity.h)
     ClearanceReport clearance; //!< clashes between parts and the smallest clearances
 };

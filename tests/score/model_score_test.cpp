@@ -42,7 +42,7 @@ TEST(ModelScore, ModelOnItsOwnSurfaceIsAtDistanceZero)
     EXPECT_EQ(s.nodes, model.nodes.size());
     EXPECT_EQ(s.faces, model.faces.size());
     EXPECT_EQ(s.genus, 1);
-    EXPECT_EQ(s.fold_overs, 0u);
+    EXPECT_EQ(s.fold_overs.count(), 0u);
     EXPECT_LT(s.fidelity.rms_symmetric, 1e-9);
     EXPECT_LT(s.fidelity.hausdorff, 1e-9);
     EXPECT_NEAR(s.energy.distance, 0.0, 1e-12);
@@ -59,7 +59,43 @@ TEST(ModelScore, InsideOutModelIsAllFoldOvers)
     ZomeModel flipped = model;
     for (auto& f : flipped.faces)
         std::reverse(f.begin(), f.end());
-    EXPECT_EQ(score_model(flipped, surface).fold_overs, model.faces.size());
+    const ModelScore s = score_model(flipped, surface);
+    EXPECT_EQ(s.fold_overs.count(), model.faces.size());
+    // Each one placed on S: its barycentre (mesh units) inside S's box, its words from that box.
+    ASSERT_EQ(s.fold_overs.places.size(), model.faces.size());
+    const TriangleMesh own = own_surface(model);
+    Vec3 lo = own.positions[0], hi = own.positions[0];
+    for (const Vec3& q : own.positions)
+    {
+        lo = lo.cwiseMin(q);
+        hi = hi.cwiseMax(q);
+    }
+    for (size_t i = 0; i < s.fold_overs.points.size(); ++i)
+    {
+        const Vec3& p = s.fold_overs.points[i];
+        EXPECT_TRUE((p.array() >= lo.array() - 1e-9).all() && (p.array() <= hi.array() + 1e-9).all());
+        EXPECT_EQ(s.fold_overs.places[i], place_on_surface(p, own));
+    }
+    // The cube's 6 sides: every face lies on one, so no fold-over is "in the middle".
+    for (const std::string& place : s.fold_overs.places)
+        EXPECT_NE(place, "middle");
+    EXPECT_EQ(fold_over_places_json(s.fold_overs).size(), model.faces.size());
+}
+
+TEST(ModelScore, FoldOverSummarySaysHowManyAndWhere)
+{
+    FoldOverReport r;
+    EXPECT_EQ(fold_over_summary(r), "0 fold-overs");
+    r.points = {Vec3::Zero()};
+    r.places = {"top"};
+    EXPECT_EQ(fold_over_summary(r), "1 fold-over (at the top)");
+    r.points = {Vec3::Zero(), Vec3::Ones(), Vec3::Zero()};
+    r.places = {"left", "middle", "left"};
+    EXPECT_EQ(fold_over_summary(r), "3 fold-overs (2 at the left, in the middle)");
+    const nlohmann::json j = fold_over_places_json(r);
+    ASSERT_EQ(j.size(), 3u);
+    EXPECT_EQ(j[1]["where"], "middle");
+    EXPECT_EQ(j[1]["at"][2], 1.0);
 }
 
 TEST(ModelScore, ShiftedSurfaceGivesThatDistance)

@@ -20,8 +20,18 @@ export function qualityText(summary) {
     lines.push(summary.clashes > 0 ? `Cannot be built as it is: ${c}.` : `Buildable: ${c}.`);
   }
   const folds = summary.stats && summary.stats.fold_overs;
-  if (folds > 0) lines.push(`${folds} ${folds === 1 ? 'face is' : 'faces are'} turned inside out (fold-overs).`);
+  if (folds > 0) {
+    const where = placesText(summary.stats.fold_over_places);
+    lines.push(`${folds} ${folds === 1 ? 'face is' : 'faces are'} turned inside out (fold-overs)${where ? ', ' + where : ''}.`);
+  }
   return lines.join(' ');
+}
+
+/** Where the fold-overs are, as the core says it ("2 at the left, at the top"): the panels to look at. */
+export function placesText(places) {
+  const counts = new Map();
+  for (const p of places || []) if (p && p.where) counts.set(p.where, (counts.get(p.where) || 0) + 1);
+  return [...counts].map(([w, n]) => `${n > 1 ? n + ' ' : ''}${w === 'middle' ? 'in the middle' : 'at the ' + w}`).join(', ');
 }
 
 const sentence = (text) => text[0].toUpperCase() + text.slice(1) + '.';

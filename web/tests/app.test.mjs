@@ -3,7 +3,7 @@
 // successes update the name, the summary and the parts.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { App, qualityText, qualityTechText, plainFidelity, resultText, verdictText } from '../src/app.js';
+import { App, qualityText, qualityTechText, placesText, plainFidelity, resultText, verdictText } from '../src/app.js';
 import { Event } from '../src/protocol.js';
 import { Status } from '../src/status.js';
 import { FakeElement, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
@@ -70,6 +70,12 @@ test('quality line: the fidelity sentence of a run, and whether the parts fit si
   assert.equal(qualityTechText({}), '');
   assert.equal(qualityText({ stats: { fold_overs: 2 } }), '2 faces are turned inside out (fold-overs).');
   assert.equal(qualityText({ stats: { fold_overs: 0 } }), '');
+  // Where they are, grouped as the core's CLI line groups them (core/score/fold_over_report.h).
+  assert.equal(qualityText({ stats: { fold_overs: 3, fold_over_places: [
+    { where: 'left', at: [0, 0, 0] }, { where: 'top left', at: [0, 1, 0] }, { where: 'left', at: [1, 0, 0] }] } }),
+  '3 faces are turned inside out (fold-overs), 2 at the left, at the top left.');
+  assert.equal(placesText([{ where: 'middle' }]), 'in the middle');
+  assert.equal(placesText(undefined), '');
 });
 
 test('a mesh: its surface and diagnosis are shown and the estimate refreshed', async () => {

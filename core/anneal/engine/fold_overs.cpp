@@ -5,18 +5,24 @@
 
 namespace zomeify {
 
-size_t count_fold_overs(const ZomeMesh& mesh, const SurfaceContext& context)
+std::vector<Face> fold_over_faces(const ZomeMesh& mesh, const SurfaceContext& context)
 {
     // The energy's own test (face_energy), so a model's count is the sum E's fold-over term keeps.
     const EnergyOptions options;
     NodeNormals normals(context);
-    size_t count = 0;
+    std::vector<Face> out;
     for (Face f : faces(mesh))
     {
         normals.clear();
-        count += face_energy(mesh, f, normals, options).fold_over ? 1 : 0;
+        if (face_energy(mesh, f, normals, options).fold_over)
+            out.push_back(f);
     }
-    return count;
+    return out;
+}
+
+size_t count_fold_overs(const ZomeMesh& mesh, const SurfaceContext& context)
+{
+    return fold_over_faces(mesh, context).size();
 }
 
 } // namespace zomeify
