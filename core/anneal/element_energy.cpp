@@ -64,6 +64,15 @@ FaceEnergy face_energy(std::span<const ZVec> corners, NodeNormals& normals, cons
     return out;
 }
 
+bool face_is_fold_over(std::span<const ZVec> corners, const SurfaceContext& context) noexcept
+{
+    LatticeSum sum;
+    for (const ZVec& c : corners)
+        sum += c;
+    const SurfaceSample barycentre = context.sample(sum, static_cast<int>(corners.size()), &corners[0]);
+    return is_fold_over(newell_normal(corners), barycentre.normal);
+}
+
 FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const EnergyOptions& options) noexcept
 {
     // Walks the face once: the corner at to_vertex(h) lies between from_vertex(h) and

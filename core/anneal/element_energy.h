@@ -46,6 +46,10 @@ FaceEnergy face_energy(std::span<const ZVec> corners, NodeNormals& normals, cons
 //! A face of the mesh (any number of corners).
 FaceEnergy face_energy(const ZomeMesh& mesh, Face f, NodeNormals& normals, const EnergyOptions& options) noexcept;
 
+//! face_energy(corners, …).fold_over alone: the face's Newell normal against the surface normal
+//! at π(barycentre).
+bool face_is_fold_over(std::span<const ZVec> corners, const SurfaceContext& context) noexcept;
+
 //! Fairing value of a node at p whose 1-ring sums to ring_sum over ring_size nodes.
 EnergyFixed fairing_energy(const ZVec& p, const LatticeSum& ring_sum, int ring_size) noexcept;
 //! Fairing value of a mesh node with its current 1-ring.

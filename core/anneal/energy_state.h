@@ -36,9 +36,10 @@ public:
     void renumbered(const ZomeMesh& mesh) { surface_.reset(mesh); }
 
     //! The change of every sum and count that applying `change` to `mesh` would cause.
-    EnergyDelta simulate(const ZomeMesh& mesh, const LocalChange& change) const noexcept
+    EnergyDelta simulate(const ZomeMesh& mesh, const LocalChange& change,
+                         FoldOvers fold_overs = FoldOvers::Count) const noexcept
     {
-        return simulate_change(mesh, change, context_, options_);
+        return simulate_change(mesh, change, context_, options_, fold_overs);
     }
     //! Adds E_surface's change to a simulated delta (no-op when w_surface is 0); `scratch` keeps
     //! what commit() needs. Reads shared state: no commit may run at the same time (the annealer

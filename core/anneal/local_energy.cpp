@@ -64,8 +64,9 @@ class LocalEnergy
 {
 public:
     LocalEnergy(const ZomeMesh& mesh, const LocalChange& change, const SurfaceContext& context,
-                const EnergyOptions& options) noexcept
-        : mesh_(mesh), change_(change), context_(context), options_(options), normals_(context)
+                const EnergyOptions& options, FoldOvers fold_overs) noexcept
+        : mesh_(mesh), change_(change), context_(context), options_(options), fold_overs_(fold_overs),
+          normals_(context)
     {
     }
 
@@ -76,6 +77,12 @@ public:
             out_.status = ChangeStatus::Overflow;
             return out_;
         }
+        if (fold_overs_ == FoldOvers::Refuse && adds_fold_over())
+        {
+            out_.status = ChangeStatus::FoldOver;
+            out_.adds_fold_over = true;
+            return out_;
+        }
         removed_samples();
         added_samples();
         fairing();
@@ -83,6 +90,15 @@ public:
     }
 
 private:
+    // The same test as face_energy's (its barycentre sample is then in the thread's cache).
+    bool adds_fold_over() const noexcept
+    {
+        for (const NewFace& f : change_.added_faces())
+            if (face_is_fold_over(f.view(), context_))
+                return true;
+        return false;
+    }
+
     void removed_samples() noexcept
     {
         EnergySums& d = out_.sums;
@@ -244,6 +260,7 @@ private:
     const LocalChange& change_;
     const SurfaceContext& context_;
     const EnergyOptions& options_;
+    const FoldOvers fold_overs_;
     NodeNormals normals_;
     EnergyDelta out_;
     // Existing nodes whose fairing value changes (removed ones included).
@@ -253,9 +270,9 @@ private:
 } // namespace
 
 EnergyDelta simulate_change(const ZomeMesh& mesh, const LocalChange& change, const SurfaceContext& context,
-                            const EnergyOptions& options) noexcept
+                            const EnergyOptions& options, FoldOvers fold_overs) noexcept
 {
-    return LocalEnergy(mesh, change, context, options).run();
+    return LocalEnergy(mesh, change, context, options, fold_overs).run();
 }
 
 } // namespace zomeify

@@ -26,7 +26,17 @@ enum class ChangeStatus : uint8_t
     Overflow,              //!< a list of the change (or the internal scratch) is full
     UnknownNode,           //!< an added strut ends at a position that is neither an added node nor a
                            //!< surviving node of the removed region
-    KeptStrutToRemovedNode //!< a surviving node keeps a strut to a removed node
+    KeptStrutToRemovedNode, //!< a surviving node keeps a strut to a removed node
+    FoldOver                //!< an added face is a fold-over and the caller refuses them (FoldOvers::Refuse):
+                            //!< the sums were not computed
+};
+
+//! What simulate_change does with a change that adds a fold-over face.
+enum class FoldOvers : uint8_t
+{
+    Count, //!< computes every sum and sets adds_fold_over (the sums count it)
+    Refuse //!< stops at the first one (status FoldOver): the annealer refuses such changes, and
+           //!< checking the added faces first spares the rest for the many proposals it refuses
 };
 
 //! The differences of the sums and counts (meaningful only when status is Ok).
@@ -42,6 +52,6 @@ struct EnergyDelta
 
 //! What applying `change` to `mesh` would do to the energy's sums. Does not modify anything.
 EnergyDelta simulate_change(const ZomeMesh& mesh, const LocalChange& change, const SurfaceContext& context,
-                            const EnergyOptions& options) noexcept;
+                            const EnergyOptions& options, FoldOvers fold_overs = FoldOvers::Count) noexcept;
 
 } // namespace zomeify

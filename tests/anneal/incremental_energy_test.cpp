@@ -87,6 +87,46 @@ TEST(EnergyIncremental, DeltaEqualsFullRecomputationOnRandomEdits)
     }
 }
 
+// FoldOvers::Refuse stops at an added fold-over face (the annealer refuses those changes); every
+// other change gets the very sums FoldOvers::Count computes.
+TEST(EnergyIncremental, RefusingFoldOversStopsExactlyAtTheChangesThatAddOne)
+{
+    int with_fold_over = 0, without = 0;
+    for (const fixtures::NamedModel& named : fixtures::closed_models())
+    {
+        SCOPED_TRACE(named.name);
+        ZomeMesh mesh = from_model(named.model);
+        const test::EnergyScene scene = test::sphere_scene_for(named.model, test::energy_test_transform());
+        const EnergyOptions options = options_for(named.model);
+        EnergyState state(mesh, *scene.context, options);
+        Rng rng(777);
+        for (int step = 0; step < 300; ++step)
+        {
+            std::optional<Edit> edit = random_edit(mesh, rng);
+            ASSERT_TRUE(edit.has_value());
+            const EnergyDelta counted = state.simulate(mesh, edit->change, FoldOvers::Count);
+            const EnergyDelta refused = state.simulate(mesh, edit->change, FoldOvers::Refuse);
+            ASSERT_TRUE(counted.ok());
+            EXPECT_EQ(refused.adds_fold_over, counted.adds_fold_over);
+            if (counted.adds_fold_over)
+            {
+                EXPECT_EQ(refused.status, ChangeStatus::FoldOver);
+                ++with_fold_over;
+            }
+            else
+            {
+                EXPECT_TRUE(refused.ok());
+                EXPECT_TRUE(refused.sums == counted.sums);
+                ++without;
+            }
+            edit->apply(mesh);
+            ASSERT_TRUE(state.commit(counted));
+        }
+    }
+    EXPECT_GT(with_fold_over, 20);
+    EXPECT_GT(without, 20);
+}
+
 TEST(EnergyIncremental, SimulateDoesNotDependOnTheOrderOfTheDescription)
 {
     // A node move described with its lists reversed gives the same integers.

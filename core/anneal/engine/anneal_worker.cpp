@@ -24,7 +24,8 @@ public:
     Worker(AnnealerState& state, int index, WorkerTotals& totals, const std::function<void()>& report)
         : s_(state), index_(index), totals_(totals.stats), report_(report),
           rng_(Rng::for_stream(state.options.seed, static_cast<uint64_t>(index))), shared_(state.options.threads > 1),
-          by_proposals_(state.options.max_proposals > 0), operators_(state.options.operator_weights)
+          by_proposals_(state.options.max_proposals > 0), operators_(state.options.operator_weights),
+          fold_overs_(state.options.refuse_new_fold_overs ? FoldOvers::Refuse : FoldOvers::Count)
     {
         make_claims();
     }
@@ -176,11 +177,11 @@ private:
             claims_->release_all();
             return;
         }
-        EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change);
         // No commit may add a face turned against the surface (no model gains a fold-over).
-        if (!delta.ok() || (delta.adds_fold_over && s_.options.refuse_new_fold_overs))
+        EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change, fold_overs_);
+        if (!delta.ok())
         {
-            const Rejection why = delta.ok() ? Rejection::FoldOver : Rejection::Overflow;
+            const Rejection why = delta.status == ChangeStatus::FoldOver ? Rejection::FoldOver : Rejection::Overflow;
             ++totals_.rejections[static_cast<size_t>(why)];
             claims_->release_all();
             return;
@@ -262,6 +263,7 @@ private:
     Rng rng_;
     const bool shared_, by_proposals_;
     const OperatorDraw operators_;
+    const FoldOvers fold_overs_;
     std::optional<Claims> claims_;
     uint64_t tags_generation_ = 0;
     Proposal proposal_;

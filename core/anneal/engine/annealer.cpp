@@ -79,9 +79,10 @@ double estimate_t0(AnnealerState& s, int& valid)
             continue;
         if (propose(kind, s.mesh, seed, rng, claims, proposal))
         {
-            EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change);
-            if (delta.ok() &&
-                (!delta.adds_fold_over || !s.options.refuse_new_fold_overs)) // what the workers would consider
+            // What the workers would consider.
+            const FoldOvers fold_overs = s.options.refuse_new_fold_overs ? FoldOvers::Refuse : FoldOvers::Count;
+            EnergyDelta delta = s.energy.simulate(s.mesh, proposal.change, fold_overs);
+            if (delta.ok())
             {
                 s.energy.add_surface_change(s.mesh, proposal.change, delta);
                 spread.add(s.energy.delta_energy(delta));
