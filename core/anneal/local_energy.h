@@ -44,8 +44,8 @@ struct EnergyDelta
 {
     EnergySums sums;
     ChangeStatus status = ChangeStatus::Ok;
-    //! An added face would face against the surface at its barycentre (is_fold_over). The sums are
-    //! still exact; the annealer refuses such a change.
+    //! An added face would face against the surface at its barycentre (is_fold_over). With
+    //! FoldOvers::Count the sums are still exact; with Refuse the status is FoldOver.
     bool adds_fold_over = false;
     bool ok() const noexcept { return status == ChangeStatus::Ok; }
 };
