@@ -65,8 +65,7 @@ class LocalEnergy
 public:
     LocalEnergy(const ZomeMesh& mesh, const LocalChange& change, const SurfaceContext& context,
                 const EnergyOptions& options, FoldOvers fold_overs) noexcept
-        : mesh_(mesh), change_(change), context_(context), options_(options), fold_overs_(fold_overs),
-          normals_(context)
+        : mesh_(mesh), change_(change), context_(context), options_(options), fold_overs_(fold_overs), normals_(context)
     {
     }
 

@@ -23,9 +23,9 @@ namespace zomeify {
 enum class ChangeStatus : uint8_t
 {
     Ok,
-    Overflow,              //!< a list of the change (or the internal scratch) is full
-    UnknownNode,           //!< an added strut ends at a position that is neither an added node nor a
-                           //!< surviving node of the removed region
+    Overflow,               //!< a list of the change (or the internal scratch) is full
+    UnknownNode,            //!< an added strut ends at a position that is neither an added node nor a
+                            //!< surviving node of the removed region
     KeptStrutToRemovedNode, //!< a surviving node keeps a strut to a removed node
     FoldOver                //!< an added face is a fold-over and the caller refuses them (FoldOvers::Refuse):
                             //!< the sums were not computed
