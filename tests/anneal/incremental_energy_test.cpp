@@ -42,6 +42,20 @@ EnergyOptions options_for(const ZomeModel& model)
     return o;
 }
 
+// A closed fixture as a mesh with its energy state, for random edits.
+struct FixtureEnergy
+{
+    explicit FixtureEnergy(const ZomeModel& model)
+        : mesh(from_model(model)), scene(test::sphere_scene_for(model, test::energy_test_transform())),
+          options(options_for(model)), state(mesh, *scene.context, options)
+    {
+    }
+    ZomeMesh mesh;
+    test::EnergyScene scene;
+    EnergyOptions options;
+    EnergyState state;
+};
+
 TEST(EnergyIncremental, DeltaEqualsFullRecomputationOnRandomEdits)
 {
     constexpr int kEditsPerModel = 300;
@@ -49,10 +63,8 @@ TEST(EnergyIncremental, DeltaEqualsFullRecomputationOnRandomEdits)
     for (const fixtures::NamedModel& named : fixtures::closed_models())
     {
         SCOPED_TRACE(named.name);
-        ZomeMesh mesh = from_model(named.model);
-        const test::EnergyScene scene = test::sphere_scene_for(named.model, test::energy_test_transform());
-        const EnergyOptions options = options_for(named.model);
-        EnergyState state(mesh, *scene.context, options);
+        FixtureEnergy fixture(named.model);
+        auto& [mesh, scene, options, state] = fixture;
         Rng rng(12345);
         for (int step = 0; step < kEditsPerModel; ++step)
         {
@@ -95,10 +107,8 @@ TEST(EnergyIncremental, RefusingFoldOversStopsExactlyAtTheChangesThatAddOne)
     for (const fixtures::NamedModel& named : fixtures::closed_models())
     {
         SCOPED_TRACE(named.name);
-        ZomeMesh mesh = from_model(named.model);
-        const test::EnergyScene scene = test::sphere_scene_for(named.model, test::energy_test_transform());
-        const EnergyOptions options = options_for(named.model);
-        EnergyState state(mesh, *scene.context, options);
+        FixtureEnergy fixture(named.model);
+        auto& [mesh, scene, options, state] = fixture;
         Rng rng(777);
         for (int step = 0; step < 300; ++step)
         {
