@@ -7,6 +7,8 @@
 #include <Eigen/Geometry>
 
 #include "core/base/errors.h"
+#include "core/surface/close_surface.h"
+#include "core/surface/merge_overlaps.h"
 #include "core/surface/read_mesh.h"
 #include "core/surface/topology.h"
 #include "core/surface/triangulate.h"
@@ -81,7 +83,8 @@ void describe_repairs(SurfaceReport& r)
                             (r.cavities ? " (cavities inward)" : ""));
 }
 
-void describe_problems(SurfaceReport& r, const TopologyInfo& t, const std::vector<uint32_t>& original)
+void describe_problems(SurfaceReport& r, const TopologyInfo& t, const std::vector<uint32_t>& original,
+                       const SurfaceClosing& closing)
 {
     if (r.faces == 0)
     {
@@ -94,6 +97,17 @@ void describe_problems(SurfaceReport& r, const TopologyInfo& t, const std::vecto
     if (r.dropped_invalid_faces)
         r.problems.push_back(plural(r.dropped_invalid_faces, "face uses", "faces use") +
                              " an index out of range or a NaN/infinite vertex; fix the file's indices and coordinates");
+    if (closing.only_sheets)
+    {
+        // Its edges and holes are the sheet's own: the one reason is that it has no inside.
+        r.problems.push_back("mesh is an open sheet, not a solid: its open edge (" +
+                             plural(closing.sheet_boundary_edges, "boundary edge", "boundary edges") +
+                             ") runs around it, and closing "
+                             "it would add " +
+                             std::to_string(static_cast<int>(std::lround(100 * closing.sheet_patch_ratio))) +
+                             "% of its area; give it a thickness or close it in a modeller first");
+        return;
+    }
     if (t.non_manifold_edges)
         r.problems.push_back("mesh is not manifold: " + plural(t.non_manifold_edges, "edge is", "edges are") +
                              " shared by more than two faces (e.g. " +
@@ -256,6 +270,44 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
     for (const uint8_t f : topo.flipped)
         r.flipped_faces += f;
     out.mesh.triangles = std::move(triangles);
+    r.input_holes = topo.holes;
+    r.input_boundary_edges = topo.boundary_edges;
+    r.input_non_manifold_edges = topo.non_manifold_edges;
+    r.input_non_manifold_vertices = topo.non_manifold_vertices;
+
+    // The repairs a person would make (issue 36); a closed, manifold, one-part mesh skips them, so
+    // such a mesh is exactly what it was before they existed.
+    SurfaceClosing closing;
+    if ((topo.boundary_edges || topo.non_manifold_edges || topo.non_manifold_vertices || topo.components > 1) &&
+        !topo.non_orientable_components)
+    {
+        const size_t faces_before = out.mesh.triangles.size();
+        closing = close_surface(out.mesh, original);
+        const bool changed = closing.pinched_vertices || closing.split_edges || !closing.hole_edges.empty() ||
+                             closing.specks || closing.sheets || out.mesh.triangles.size() != faces_before;
+        if (changed && !closing.only_sheets)
+        {
+            // An open part's outward side was a guess; closed, its volume tells. Faces count as
+            // flipped when they end up reversed against the input.
+            const std::vector<uint8_t> first = topo.flipped;
+            topo = analyse_topology(out.mesh.positions, out.mesh.triangles);
+            r.flipped_faces = 0;
+            for (size_t f = 0; f < topo.flipped.size(); ++f)
+                if (closing.source_face[f] != 0xFFFFFFFFu)
+                    r.flipped_faces += first[closing.source_face[f]] != topo.flipped[f];
+        }
+    }
+    r.filled_holes = closing.only_sheets ? 0 : closing.hole_edges.size();
+    r.separated_pinched_vertices = closing.pinched_vertices;
+    r.separated_edges = closing.split_edges;
+    r.dropped_specks = closing.specks;
+    r.dropped_sheets = closing.sheets;
+
+    // Parts that overlap are one solid: their inner walls go, the genus is the union's.
+    OverlapMerge merged;
+    if (topo.components > 1 && topo.boundary_edges == 0 && topo.non_manifold_edges == 0 &&
+        topo.non_manifold_vertices == 0 && topo.non_orientable_components == 0)
+        merged = merge_overlapping_parts(out.mesh);
 
     r.vertices = out.mesh.positions.size();
     r.faces = out.mesh.triangles.size();
@@ -269,11 +321,25 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
     r.cavities = topo.cavities;
     r.euler = topo.euler;
     r.genus = topo.genus;
+    r.joined_overlapping_parts = merged.joined_parts;
+    if (merged.joined_parts)
+    {
+        r.components = merged.solids;
+        r.genus = merged.genus;
+        r.euler = 2 * static_cast<long long>(merged.solids) - 2 * merged.genus;
+        r.faces = out.mesh.triangles.size();
+    }
     r.closed = r.faces > 0 && topo.boundary_edges == 0;
     r.manifold = r.faces > 0 && topo.non_manifold_edges == 0 && topo.non_manifold_vertices == 0 &&
                  topo.non_orientable_components == 0;
     describe_repairs(r);
-    describe_problems(r, topo, original);
+    for (std::string& line : describe_closing(closing))
+        r.repairs.push_back(std::move(line));
+    if (merged.joined_parts)
+        r.repairs.push_back("joined " + plural(merged.joined_parts, "overlapping part", "overlapping parts") +
+                            " into " + plural(merged.solids, "solid", "solids") + " (removed " +
+                            plural(merged.removed_faces, "face", "faces") + " inside other parts)");
+    describe_problems(r, topo, original, closing);
     if (huge)
         r.problems.push_back("coordinates are too large (the bounding box diagonal overflows); scale the model down");
     return out;

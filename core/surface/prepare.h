@@ -1,7 +1,8 @@
 #pragma once
 //! \file prepare.h
 //! Diagnosis and repair of an imported surface (issue 3): weld duplicate vertices, drop degenerate
-//! and duplicate faces, triangulate polygons, orient every component consistently and outward, then
+//! and duplicate faces, triangulate polygons, orient every component consistently and outward; then
+//! separate pinched vertices and edges, close holes, drop specks and loose open sheets (issue 36),
 //! check that the result is a closed 2-manifold and measure its topology.
 
 #include <array>
@@ -32,6 +33,19 @@ struct SurfaceReport
     size_t dropped_duplicate_faces = 0;  //!< same vertices, same orientation as an earlier face
     size_t triangulated_polygons = 0;    //!< polygons with more than 3 vertices
     size_t flipped_faces = 0;            //!< triangles whose orientation was reversed
+    // Repairs of a mesh from the wild (close_surface.h).
+    size_t filled_holes = 0;               //!< boundary loops closed with a patch
+    size_t separated_pinched_vertices = 0; //!< vertices where separate fans of faces met
+    size_t separated_edges = 0;            //!< edges that had more than two faces
+    size_t dropped_specks = 0;             //!< parts under 1% of the mesh's size
+    size_t dropped_sheets = 0;             //!< open sheets beside a solid
+    size_t joined_overlapping_parts = 0;   //!< closed parts that overlap another, joined (merge_overlaps.h)
+
+    // What the input had before those repairs (the same as the result's fields when none applied).
+    size_t input_holes = 0;
+    size_t input_boundary_edges = 0;
+    size_t input_non_manifold_edges = 0;
+    size_t input_non_manifold_vertices = 0;
 
     // Result.
     size_t vertices = 0;

@@ -95,6 +95,18 @@ std::string surface_report_json(const SurfaceReport& r, const std::string& name)
         {"dropped_duplicate_faces", r.dropped_duplicate_faces},
         {"triangulated_polygons", r.triangulated_polygons},
         {"flipped_faces", r.flipped_faces},
+        {"filled_holes", r.filled_holes},
+        {"separated_pinched_vertices", r.separated_pinched_vertices},
+        {"separated_edges", r.separated_edges},
+        {"dropped_specks", r.dropped_specks},
+        {"dropped_sheets", r.dropped_sheets},
+        {"joined_overlapping_parts", r.joined_overlapping_parts},
+    };
+    j["input_defects"] = {
+        {"holes", r.input_holes},
+        {"boundary_edges", r.input_boundary_edges},
+        {"non_manifold_edges", r.input_non_manifold_edges},
+        {"non_manifold_vertices", r.input_non_manifold_vertices},
     };
     j["repaired"] = r.repairs;
     j["problems"] = r.problems;

@@ -147,41 +147,57 @@ TEST(SurfaceBadInput, FaceWithOneOrTwoVertices)
     EXPECT_EQ(read_mesh_buffer(bytes_of("OFF\n2 1 0\n0 0 0\n1 0 0\n2 0 1\n"), "m.off").polygons[0].size(), 2u);
 }
 
-TEST(SurfaceBadInput, TwoCubesSharingOnlyAnEdge)
+TEST(SurfaceBadInput, TwoCubesSharingOnlyAnEdgeAreSeparated)
 {
-    // The second cube touches the first along the edge x = 1, y = 1 (after welding).
-    const std::string m = prepare_error(merge(cube_quads(), cube_quads(Vec3(1, 1, 0))));
-    EXPECT_CONTAINS(m, "not manifold");
-    EXPECT_CONTAINS(m, "1 edge is shared by more than two faces");
-    EXPECT_CONTAINS(m, "between vertices 3 and 7");
+    // The second cube touches the first along the edge x = 1, y = 1 (after welding): the edge has
+    // four faces, paired so that each cube closes (issue 36; refused before).
     const SurfaceReport r = diagnose(merge(cube_quads(), cube_quads(Vec3(1, 1, 0))));
-    EXPECT_EQ(r.non_manifold_edges, 1u);
+    EXPECT_TRUE(r.ok()) << r.problem_summary();
+    EXPECT_EQ(r.input_non_manifold_edges, 1u);
+    EXPECT_EQ(r.separated_edges, 1u);
+    EXPECT_EQ(r.non_manifold_edges, 0u);
     EXPECT_EQ(r.welded_vertices, 2u);
-    EXPECT_FALSE(r.manifold);
+    EXPECT_EQ(r.components, 2u);
+    EXPECT_TRUE(r.manifold);
     EXPECT_TRUE(r.closed);
 }
 
-TEST(SurfaceBadInput, TwoCubesSharingOnlyAVertex)
+TEST(SurfaceBadInput, TwoCubesSharingOnlyAVertexAreSeparated)
 {
-    const std::string m = prepare_error(merge(cube_quads(), cube_quads(Vec3(1, 1, 1))));
-    EXPECT_CONTAINS(m, "1 vertex joins separate fans");
-    EXPECT_CONTAINS(m, "vertex 7");
+    const SurfaceReport r = diagnose(merge(cube_quads(), cube_quads(Vec3(1, 1, 1))));
+    EXPECT_TRUE(r.ok()) << r.problem_summary();
+    EXPECT_EQ(r.input_non_manifold_vertices, 1u);
+    EXPECT_EQ(r.separated_pinched_vertices, 1u);
+    EXPECT_EQ(r.vertices, 16u);
+    EXPECT_CONTAINS(r.repairs.back(), "separated 1 pinched vertex");
 }
 
-TEST(SurfaceBadInput, OpenBox)
+TEST(SurfaceBadInput, OpenBoxIsClosed)
 {
     PolygonSoup box = cube_quads();
     box.polygons.erase(box.polygons.begin() + 1); // no lid
-    const std::string m = prepare_error(box);
-    EXPECT_CONTAINS(m, "mesh is not closed: 1 hole (4 boundary edges");
-    EXPECT_CONTAINS(m, "fill the 1 hole first");
-    // Lid and bottom removed: a tube with two holes, genus 0 (a sphere with two holes).
+    const PreparedSurface p = prepare_surface(box);
+    EXPECT_EQ(p.report.input_holes, 1u);
+    EXPECT_EQ(p.report.holes, 0u);
+    EXPECT_CONTAINS(p.report.repairs.back(), "closed 1 small hole (4 edges)");
+    EXPECT_NEAR(signed_volume(p.mesh), 1.0, 1e-12);
+    // Lid and bottom removed: a tube with two holes, genus 0 (a sphere with two holes), closed at both ends.
     box.polygons.erase(box.polygons.begin());
     const SurfaceReport r = diagnose(box);
-    EXPECT_EQ(r.holes, 2u);
-    EXPECT_EQ(r.boundary_edges, 8u);
+    EXPECT_EQ(r.input_holes, 2u);
+    EXPECT_EQ(r.input_boundary_edges, 8u);
     EXPECT_EQ(r.genus, 0);
-    EXPECT_CONTAINS(r.problem_summary(), "fill the 2 holes first");
+    EXPECT_CONTAINS(r.repairs.back(), "closed 2 small holes (4 edges each)");
+}
+
+TEST(SurfaceBadInput, OpenSheetIsRefusedWithTheReason)
+{
+    PolygonSoup quad;
+    quad.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    quad.polygons = {{0, 1, 2, 3}};
+    const std::string m = prepare_error(quad);
+    EXPECT_CONTAINS(m, "mesh is an open sheet, not a solid: its open edge (4 boundary edges) runs around it");
+    EXPECT_CONTAINS(m, "would add 100% of its area");
 }
 
 TEST(SurfaceBadInput, HugeCountsInHeaders)

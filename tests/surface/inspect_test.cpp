@@ -45,11 +45,22 @@ TEST(InspectReport, TableAndJsonOfARepairedCube)
 
 TEST(InspectReport, ProblemsInTable)
 {
+    PolygonSoup quad;
+    quad.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    quad.polygons = {{0, 1, 2, 3}};
+    const std::string table = surface_report_table(diagnose(quad), "quad.obj");
+    EXPECT_NE(table.find("closed          no (1 hole, 4 boundary edges)"), std::string::npos) << table;
+    EXPECT_NE(table.find("problems        mesh is an open sheet"), std::string::npos) << table;
+}
+
+TEST(InspectReport, RepairsInTable)
+{
     PolygonSoup box = cube_quads();
     box.polygons.pop_back();
     const std::string table = surface_report_table(diagnose(box), "box.obj");
-    EXPECT_NE(table.find("closed          no (1 hole, 4 boundary edges)"), std::string::npos) << table;
-    EXPECT_NE(table.find("problems        mesh is not closed"), std::string::npos) << table;
+    EXPECT_NE(table.find("closed          yes\n"), std::string::npos) << table;
+    EXPECT_NE(table.find("closed 1 small hole (4 edges)"), std::string::npos) << table;
+    EXPECT_NE(table.find("problems        none"), std::string::npos) << table;
 }
 
 #ifndef __EMSCRIPTEN__
@@ -121,19 +132,36 @@ TEST(InspectCli, Table)
     EXPECT_NE(r.out.find("vertices        766\n"), std::string::npos) << r.out;
 }
 
-TEST(InspectCli, OpenMeshReportsAndFails)
+TEST(InspectCli, OpenSheetReportsAndFails)
 {
-    PolygonSoup box = cube_quads();
-    box.polygons.pop_back();
-    const std::string path = test::temp_path("open_box.obj");
-    std::ofstream(path) << to_obj(box);
+    PolygonSoup quad;
+    quad.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    quad.polygons = {{0, 1, 2, 3}};
+    const std::string path = test::temp_path("quad.obj");
+    std::ofstream(path) << to_obj(quad);
     const CliResult r = run_cli("inspect '" + path + "' --json");
     EXPECT_EQ(r.status, 1);
     const auto j = nlohmann::json::parse(r.out);
     EXPECT_EQ(j["ok"], false);
     EXPECT_EQ(j["holes"], 1);
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find("open_box.obj: mesh is not closed: 1 hole (4 boundary edges"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("quad.obj: mesh is an open sheet, not a solid"), std::string::npos) << r.err;
+}
+
+TEST(InspectCli, OpenBoxIsRepairedAndListed)
+{
+    PolygonSoup box = cube_quads();
+    box.polygons.pop_back();
+    const std::string path = test::temp_path("open_box.obj");
+    std::ofstream(path) << to_obj(box);
+    const CliResult r = run_cli("inspect '" + path + "' --json");
+    EXPECT_EQ(r.status, 0) << r.err;
+    const auto j = nlohmann::json::parse(r.out);
+    EXPECT_EQ(j["ok"], true);
+    EXPECT_EQ(j["holes"], 0);
+    EXPECT_EQ(j["input_defects"]["holes"], 1);
+    EXPECT_EQ(j["repairs"]["filled_holes"], 1);
+    EXPECT_EQ(j["repaired"].back(), "closed 1 small hole (4 edges)");
 }
 
 TEST(InspectCli, UnreadableFileIsOneLineError)
