@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <numeric>
 
+#include "core/surface/edge_uses.h"
+
 namespace zomeify {
 
 namespace {
@@ -23,20 +25,10 @@ uint32_t find(std::vector<uint32_t>& parent, uint32_t x)
 
 std::vector<uint32_t> face_parts(const std::vector<std::array<uint32_t, 3>>& triangles, size_t& count)
 {
-    struct Use
-    {
-        uint64_t key;
-        uint32_t face;
-    };
-    std::vector<Use> uses;
-    uses.reserve(3 * triangles.size());
-    for (uint32_t f = 0; f < triangles.size(); ++f)
-        for (int c = 0; c < 3; ++c)
-        {
-            const uint32_t p = triangles[f][c], q = triangles[f][(c + 1) % 3];
-            uses.push_back({(uint64_t{std::min(p, q)} << 32) | std::max(p, q), f});
-        }
-    std::sort(uses.begin(), uses.end(), [](const Use& a, const Use& b) { return a.key < b.key; });
+    size_t vertex_count = 0;
+    for (const auto& t : triangles)
+        vertex_count = std::max<size_t>(vertex_count, std::max({t[0], t[1], t[2]}) + size_t{1});
+    const std::vector<EdgeUse> uses = sorted_edge_uses(triangles, vertex_count);
     std::vector<uint32_t> parent(triangles.size());
     std::iota(parent.begin(), parent.end(), uint32_t{0});
     for (size_t i = 1; i < uses.size(); ++i)

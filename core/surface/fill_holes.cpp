@@ -5,6 +5,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/surface/edge_uses.h"
+
 namespace zomeify {
 
 namespace {
@@ -91,25 +93,11 @@ HoleFilling fill_holes(std::vector<Vec3>& positions, std::vector<Triangle>& tria
 {
     HoleFilling out;
     // Directed edges used once (their reverse never): the rim of a hole, in the faces' direction.
-    struct Directed
-    {
-        uint64_t key;
-        uint32_t from, to, face;
-    };
-    std::vector<Directed> edges;
-    edges.reserve(3 * triangles.size());
-    for (uint32_t f = 0; f < triangles.size(); ++f)
-        for (int c = 0; c < 3; ++c)
-        {
-            const uint32_t p = triangles[f][c], q = triangles[f][(c + 1) % 3];
-            edges.push_back({(uint64_t{std::min(p, q)} << 32) | std::max(p, q), p, q, f});
-        }
-    std::sort(edges.begin(), edges.end(),
-              [](const Directed& a, const Directed& b) { return a.key != b.key ? a.key < b.key : a.face < b.face; });
+    const std::vector<EdgeUse> edges = sorted_edge_uses(triangles, positions.size());
     // Every edge of the mesh, sorted (so the patches can avoid them as diagonals).
     std::vector<uint64_t> mesh_edges;
-    mesh_edges.reserve(edges.size());
-    for (const Directed& e : edges)
+    mesh_edges.reserve(edges.size() / 2);
+    for (const EdgeUse& e : edges)
         if (mesh_edges.empty() || mesh_edges.back() != e.key)
             mesh_edges.push_back(e.key);
     std::vector<uint32_t> next(positions.size(), none);
@@ -123,12 +111,13 @@ HoleFilling fill_holes(std::vector<Vec3>& positions, std::vector<Triangle>& tria
             ++j;
         if (j - i == 1)
         {
-            const Directed& e = edges[i];
-            if (next[e.from] != none)
-                ambiguous[e.from] = 1;
-            next[e.from] = e.to;
-            rim_face[e.from] = e.face;
-            starts.push_back(e.from);
+            const EdgeUse& e = edges[i];
+            const uint32_t from = triangles[e.face][e.corner], to = triangles[e.face][(e.corner + 1) % 3];
+            if (next[from] != none)
+                ambiguous[from] = 1;
+            next[from] = to;
+            rim_face[from] = e.face;
+            starts.push_back(from);
         }
         i = j;
     }

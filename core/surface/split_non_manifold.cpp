@@ -6,6 +6,8 @@
 
 #include <Eigen/Geometry>
 
+#include "core/surface/edge_uses.h"
+
 namespace zomeify {
 
 namespace {
@@ -29,13 +31,6 @@ void unite(std::vector<uint32_t>& parent, uint32_t a, uint32_t b)
     if (a != b)
         parent[std::max(a, b)] = std::min(a, b);
 }
-
-struct EdgeUse
-{
-    uint64_t key;
-    uint32_t face;
-    uint8_t corner; // the directed edge runs from this corner to the next
-};
 
 // Corners of two faces that share edge (u.face's corner u.corner → next) lie in one fan at each end.
 void join_across(std::vector<uint32_t>& fans, const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeUse& u,
@@ -103,16 +98,7 @@ NonManifoldSplit split_non_manifold(std::vector<Vec3>& positions, std::vector<st
 {
     NonManifoldSplit out;
     const size_t nf = triangles.size();
-    std::vector<EdgeUse> uses;
-    uses.reserve(3 * nf);
-    for (uint32_t f = 0; f < nf; ++f)
-        for (uint8_t c = 0; c < 3; ++c)
-        {
-            const uint32_t p = triangles[f][c], q = triangles[f][(c + 1) % 3];
-            uses.push_back({(uint64_t{std::min(p, q)} << 32) | std::max(p, q), f, c});
-        }
-    std::sort(uses.begin(), uses.end(),
-              [](const EdgeUse& p, const EdgeUse& q) { return p.key != q.key ? p.key < q.key : p.face < q.face; });
+    const std::vector<EdgeUse> uses = sorted_edge_uses(triangles, positions.size());
 
     // Fans: corners joined across every edge that two faces share (as analyse_topology counts them).
     std::vector<uint32_t> fans(3 * nf);

@@ -5,6 +5,7 @@
 
 #include <Eigen/Geometry>
 
+#include "core/surface/edge_uses.h"
 #include "core/surface/nesting.h"
 
 namespace zomeify {
@@ -38,16 +39,6 @@ private:
     std::vector<uint32_t> parent_;
 };
 
-// One face side of an undirected edge: the face, the corner the directed edge starts at.
-struct EdgeUse
-{
-    uint64_t key; // (min vertex << 32) | max vertex
-    uint32_t face;
-    uint8_t corner;
-};
-
-uint64_t edge_key(uint32_t a, uint32_t b) { return (static_cast<uint64_t>(std::min(a, b)) << 32) | std::max(a, b); }
-
 // Which neighbour each face has across each of its three edges (manifold edges only), and whether
 // the two faces run along the shared edge in the same direction (inconsistent orientation).
 struct Adjacency
@@ -65,15 +56,8 @@ TopologyInfo analyse_topology(const std::vector<Vec3>& positions, std::vector<st
     const size_t nf = triangles.size();
     info.flipped.assign(nf, 0);
 
-    // Sorting all directed edges groups the uses of each undirected edge together: O(F log F),
-    // with no hash map and a deterministic order.
-    std::vector<EdgeUse> uses;
-    uses.reserve(3 * nf);
-    for (uint32_t f = 0; f < nf; ++f)
-        for (uint8_t k = 0; k < 3; ++k)
-            uses.push_back({edge_key(triangles[f][k], triangles[f][(k + 1) % 3]), f, k});
-    std::sort(uses.begin(), uses.end(),
-              [](const EdgeUse& a, const EdgeUse& b) { return a.key != b.key ? a.key < b.key : a.face < b.face; });
+    // All directed edges grouped by undirected edge, in a deterministic order, with no hash map.
+    const std::vector<EdgeUse> uses = sorted_edge_uses(triangles, positions.size());
 
     Adjacency adj{std::vector<uint32_t>(3 * nf, none), std::vector<uint8_t>(3 * nf, 0)};
     UnionFind faces(nf);
