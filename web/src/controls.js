@@ -76,8 +76,10 @@ export class Controls {
     this.estimateSerial = 0;
     this.initialOnly = false; // API only: stop after Z0
     this.lastEstimate = null; // of the resolution shown, for the run's genus check
-    this.genusConsent = false; // the user chose to run at a resolution that loses the genus
+    this.genusConsent = false; // the user ticked "run anyway" (never ticked for them)
+    this.noKeepingGrid = false; // the core's automatic choice found no grid that keeps the holes
     this.autoMessage = '';
+    this.resultResolution = 0; // the model on screen is the loaded shape's, made at this resolution
     this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
 
     this.el('resolution').addEventListener('input', () => this.set({ resolution: this.el('resolution').value }));
@@ -127,12 +129,40 @@ export class Controls {
       this.scheduleEstimate();
       return null;
     }
+    const serial = this.estimateSerial;
     const a = await autoResolution();
+    if (serial !== this.estimateSerial) return null; // another shape (or resolution) came meanwhile
     this.set({ resolution: a.resolution });
-    this.genusConsent = !a.kept; // no grid keeps the genus: say so and go on (issue 26)
-    this.autoMessage = `Resolution chosen for this shape: ${a.message}.`;
+    // No grid keeps the holes: the core's sentence says so and a run goes on (issue 26) without a
+    // "run anyway" box, as there is nothing else to choose.
+    this.noKeepingGrid = !a.kept;
+    this.autoMessage = `Resolution chosen for this shape: ${a.message.replace(/\.$/, '')}.`;
+    clearTimeout(this.estimateTimer); // this answer is the estimate of this resolution
+    this.estimateSerial++;
     this.showEstimate(a, a.resolution);
     return a;
+  }
+
+  /** A new shape was loaded: the last shape's estimate, advice and consent go at once. */
+  shapeChanged() {
+    clearTimeout(this.estimateTimer);
+    this.estimateSerial++;
+    this.autoMessage = '';
+    this.genusConsent = false;
+    this.noKeepingGrid = false;
+    this.resultResolution = 0;
+    this.showEstimate(null, 0);
+    this.el('estimate').textContent = 'Choosing a resolution for this shape…';
+  }
+
+  /**
+   * The model on screen is the loaded shape's, made at `resolution` (0: it is not): while the
+   * controls show that resolution, its kit plan under Parts is the one kit sentence, so the
+   * estimate line names no kits of its own.
+   */
+  setResult(resolution) {
+    this.resultResolution = resolution > 0 ? resolution : 0;
+    if (this.lastEstimate) this.showEstimate(this.lastEstimate, this.lastEstimate.resolution);
   }
 
   /**
@@ -142,7 +172,9 @@ export class Controls {
   runBlocker() {
     const e = this.lastEstimate;
     if (this.sizeMode()) return checkSize(this.el('size-cm').value).error;
-    if (!e || e.kept || this.genusConsent || Number(this.el('resolution').value) !== e.resolution) return '';
+    if (!e || e.kept || this.genusConsent || this.noKeepingGrid || Number(this.el('resolution').value) !== e.resolution) {
+      return '';
+    }
     return `${adviceText(e, e.resolution)}. Use the suggested resolution, or tick "run anyway".`;
   }
 
@@ -170,8 +202,9 @@ export class Controls {
     if (o.resolution !== undefined) {
       // A new resolution: the automatic choice's note and any consent to lose the genus go.
       this.autoMessage = '';
-    this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
+      this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
       this.genusConsent = false;
+      this.noKeepingGrid = false;
       this.el('resolution').value = o.resolution;
       this.el('resolution-value').textContent = String(o.resolution);
       this.scheduleEstimate();
@@ -304,9 +337,16 @@ export class Controls {
     return plan;
   }
 
+  /**
+   * Run and Cancel swap. A disabled button loses the keyboard focus to the page body, so the focus
+   * moves to the one that is enabled now (Run → Cancel, and back when the run ends).
+   */
   setRunning(running) {
-    this.el('run').disabled = running;
-    this.el('cancel').disabled = !running;
+    const [from, to] = running ? [this.el('run'), this.el('cancel')] : [this.el('cancel'), this.el('run')];
+    const hadFocus = globalThis.document?.activeElement === from;
+    to.disabled = false;
+    from.disabled = true;
+    if (hadFocus) to.focus();
   }
 
   scheduleEstimate() {
@@ -362,11 +402,20 @@ export class Controls {
     const target = Number(this.el('target').value) || e.nodes;
     this.showKitFit(e);
     const asked = this.sizeMode() && e.size_cm ? `At ${e.size_cm} cm (about ${e.resolution} cells):` : '';
-    out.textContent = [this.autoMessage, asked, estimateText(e, target) + (isLarge(e) ? ' — a very large build.' : '')]
-      .filter(Boolean).join(' ');
+    // The automatic choice's sentence is said once: with the bill, or as the warning when no grid
+    // keeps the holes (then there is no other advice and no "run anyway" to tick).
+    const lost = !e.kept && this.autoMessage && this.noKeepingGrid;
+    const shown = this.resultResolution > 0 && this.resultResolution === resolution;
+    const bill = shown ? `The model on screen was made at ${resolution} cells; its parts and kit plan are under Parts.`
+      : estimateText(e, target) + (isLarge(e) ? ' — a very large build.' : '');
+    out.textContent = [lost ? '' : this.autoMessage, asked, bill].filter(Boolean).join(' ');
     warn.replaceChildren();
     warn.hidden = e.kept;
     if (e.kept) return;
+    if (lost) {
+      warn.append(this.autoMessage);
+      return;
+    }
     warn.append(adviceText(e, resolution) + '.');
     if (e.advice_resolution > 0 && e.advice_resolution !== resolution) this.appendSuggestion(warn, e.advice_resolution);
     const consent = document.createElement('label');

@@ -116,7 +116,28 @@ test('automatic resolution: set on the slider with its message; a lost genus nee
     surface_genus: 1, message: 'no grid up to 64 cells keeps the hole through it', size_mm: 900 }));
   clearTimeout(controls.estimateTimer);
   assert.equal(controls.runBlocker(), '');
-  assert.match(el('estimate').textContent, /no grid up to 64 cells/);
+  // Said once, as the warning; nothing to tick (issue 38: no "run anyway" box is ticked for the user).
+  assert.match(el('advice').text, /no grid up to 64 cells/);
+  assert.doesNotMatch(el('estimate').textContent, /no grid up to 64 cells/);
+  assert.equal(el('advice').children.some((c) => c.tagName === 'LABEL'), false);
+  assert.equal(el('advice').hidden, false);
+});
+
+test('a shown result of this shape and resolution is the one kit sentence; a new shape clears the line', async () => {
+  const { controls, el } = makeControls(async (r) => ({ nodes: 10 * r, struts: 20 * r, kept: true, genus: 1,
+    surface_genus: 1, size_mm: r * 75, kits: 1, kit_plan: '1 Creator 3' }));
+  el('resolution').value = '12';
+  await controls.updateEstimate();
+  assert.match(el('estimate').textContent, /kits: about 1 Creator 3/);
+  controls.setResult(12);
+  assert.equal(el('estimate').textContent, 'The model on screen was made at 12 cells; its parts and kit plan are under Parts.');
+  el('resolution').value = '14'; // another resolution: another model, with its own estimate
+  await controls.updateEstimate();
+  assert.match(el('estimate').textContent, /kits: about 1 Creator 3/);
+  controls.shapeChanged();
+  assert.equal(el('estimate').textContent, 'Choosing a resolution for this shape…');
+  assert.equal(controls.lastEstimate, null);
+  clearTimeout(controls.estimateTimer);
 });
 
 test('the form read as RunOptions: defaults, and empty or bad fields fall back', () => {

@@ -51,13 +51,16 @@ test('the model\'s name drops the loaded file\'s extension (any case), and is ne
 
 test('download names: every format from its template; a base with "parts", "model" or "$&" is literal', () => {
   const names = Object.values(FORMATS).flat().map((t) => exportFileName(t, 'torus'));
-  assert.deepEqual(names, ['torus.vef', 'torus.vef', 'torus.glb', 'torus.obj', 'torus.mtl', 'torus.zome.json',
+  assert.deepEqual(names, ['torus.vef', 'torus-no-panels.vef', 'torus.glb', 'torus.obj', 'torus.mtl', 'torus.zome.json',
     'torus-parts.csv']);
   // Before file_names.js, 'model.vef' became 'parts-parts.vef' for a model named "parts".
   assert.equal(exportFileName('model.vef', 'parts'), 'parts.vef');
   assert.equal(exportFileName('parts.csv', 'bodyparts'), 'bodyparts-parts.csv');
   assert.equal(exportFileName('model.obj', 'shared-model'), 'shared-model.obj');
   assert.equal(exportFileName('model.glb', 'a$&b'), 'a$&b.glb');
+  // The two VEF buttons save under different names (issue 38).
+  assert.equal(new Set(names).size, names.length);
+  assert.equal(exportFileName('model-no-panels.vef', 'model'), 'model-no-panels.vef');
 });
 
 test('a URL\'s file name: decoded, query dropped, "mesh" for a directory, a bad %-escape kept as is', () => {
