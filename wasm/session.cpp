@@ -208,6 +208,7 @@ std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface& s, int 
     out["surface_genus"] = s.report.genus;
     out["kept"] = z0.report.valid && z0.report.topology.genus == s.report.genus;
     out["seconds"] = z0.report.seconds;
+    out["z0_seconds"] = z0.report.seconds; // kept when `seconds` is the automatic search's time
     out.update(size_estimate(z0, z0.model.nodes.size()));
     return {std::move(z0), std::move(out)};
 }
@@ -354,6 +355,10 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
         const LoadedSurface& s = *surface_;
         PipelineOptions po = pipeline_options(options);
         po.advisor_seconds = 3.0;
+        // The page already holds the core's answer on holes for this resolution (estimate, or the
+        // automatic choice) and says it once; the run does not search again (up to 3 s before
+        // annealing, which a time preset does not count) for a second, possibly different, hint.
+        po.advise = false;
         if (options.size_cm > 0.0)
             po.b1 = b1_for_size_cm(longest_side(s.mesh), options.size_cm); // as `run --size-cm`
         AnnealOptions& a = po.anneal;

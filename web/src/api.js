@@ -46,6 +46,10 @@ export function installApi(app, { ready, warmedUp, info, buildView = null }) {
     /** Fractions of the canvas in each strut colour (a pixel check of the rendering). */
     colourCoverage: () => app.viewer.colourCoverage(),
     fit: () => app.viewer.fit(),
+    /** The camera: {position, target} (mesh units); tests check that a drag or a pinch moved it. */
+    camera: () => ({ position: app.viewer.camera.position.toArray(), target: app.viewer.controls.target.toArray() }),
+    /** The estimate the controls show (the core's answer for the resolution on the slider), or null. */
+    estimate: () => app.controls.lastEstimate,
     /** The Build view: opens it (resolves with the plan: nodes, steps, figures, html) and shows step k (0-based). */
     openBuildView: () => buildView.open(),
     buildStep: (k) => buildView.show(k),

@@ -297,7 +297,10 @@ export class App {
     else {
       this.lastError = null;
       const verdict = s ? ` ${verdictText(s, this.modelOfSurface ? this.surfaceGenus : null, keeping ?? -1)}.` : '';
-      this.status.note(`${ended}${verdict} ${final.note ? asSentence(final.note) : ''}`.trim());
+      // A lost hole is said once, by the verdict from the controls' answer; the run's own note then
+      // adds nothing (it would be a second voice on the same holes).
+      const note = final.note && keeping === null ? asSentence(final.note) : '';
+      this.status.note(`${ended}${verdict} ${note}`.trim());
     }
     this.loadQueued();
     return final;

@@ -299,9 +299,12 @@ export class Controls {
     const fit = this.lastFit;
     const planned = fit?.possible && !this.sizeMode() && Number(this.el('resolution').value) === fit.resolution &&
       Number(this.el('target').value) === fit.target_nodes;
+    if (planned) {
+      out.textContent = this.fitText; // it already says the result is checked: once is enough
+      return;
+    }
     try {
-      const line = estimateFitText(await this.kitCheckFn(have, balls), balls);
-      out.textContent = planned ? `${this.fitText} ${line}` : line;
+      out.textContent = estimateFitText(await this.kitCheckFn(have, balls), balls);
     } catch (err) {
       out.textContent = err.message;
     }
@@ -324,6 +327,7 @@ export class Controls {
     if (!have) return fail('Choose the kits you own first (how many of each).');
     if (!this.fitKitsFn) return fail('The core is not ready yet.');
     const bound = this.sizeMode() && this.lastEstimate?.resolution > 0 ? this.lastEstimate.resolution : 0;
+    const sizeLimit = bound ? { cm: checkSize(this.el('size-cm').value).cm, resolution: bound } : null;
     let plan;
     try {
       plan = await this.fitKitsFn(have, bound, this.kitsMissed);
@@ -332,7 +336,7 @@ export class Controls {
     }
     this.lastFit = plan;
     if (plan.possible) this.set({ resolution: plan.resolution, target_nodes: plan.target_nodes });
-    this.fitText = fitPlanText(plan);
+    this.fitText = fitPlanText(plan, sizeLimit);
     out.textContent = this.fitText;
     return plan;
   }
