@@ -88,22 +88,33 @@ std::string guarded(F&& body)
     }
 }
 
-// A rough bill for a finished model of `balls` balls from Z0 across `cells` B1 cells: its size at
-// real scale, and the kits to buy for the strut mix of a typical finished model (kit_fit.h's
-// typical_parts, the mix the CLI's kit estimate uses), planned as `zomeify parts` plans.
-nlohmann::json size_estimate(const InitialModel& z0, size_t balls)
+std::string plan_text(const KitPlan& plan)
+{
+    std::string text;
+    for (const auto& [kit, n] : plan.kits)
+        text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
+    return text;
+}
+
+// A bill for the finished model from Z0 across its cells: its size at real scale, and the kits.
+// The kits named ("kit_plan") hold Z0's parts plus what annealing adds at most (kit_fit.h's
+// estimate_parts, measured on the shared meshes), so buying them never falls short of the plan
+// after the run; "kit_plan_low" is the plan for Z0's own parts, the other end of the range.
+nlohmann::json size_estimate(const InitialModel& z0)
 {
     const auto& dims = z0.report.grid.dims;
     const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
-    const KitPlan plan = plan_kits(typical_parts(balls));
+    const PartsList parts = parts_list(z0.model);
+    const KitPlan high = plan_kits(estimate_parts(parts));
+    const KitPlan low = plan_kits(parts);
     size_t kits = 0;
-    std::string text;
-    for (const auto& [kit, n] : plan.kits)
-    {
+    for (const auto& [kit, n] : high.kits)
         kits += n;
-        text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
-    }
-    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0}, {"kits", kits}, {"kit_plan", text}};
+    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0},
+            {"kits", kits},
+            {"kit_plan", plan_text(high)},
+            {"kit_plan_parts", high.parts_bought},
+            {"kit_plan_low", plan_text(low)}};
 }
 
 std::string owned_text(const OwnedKits& owned)
@@ -209,7 +220,7 @@ std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface& s, int 
     out["kept"] = z0.report.valid && z0.report.topology.genus == s.report.genus;
     out["seconds"] = z0.report.seconds;
     out["z0_seconds"] = z0.report.seconds; // kept when `seconds` is the automatic search's time
-    out.update(size_estimate(z0, z0.model.nodes.size()));
+    out.update(size_estimate(z0));
     return {std::move(z0), std::move(out)};
 }
 

@@ -28,6 +28,21 @@ PartsList typical_parts(size_t balls)
     return parts;
 }
 
+PartsList estimate_parts(const PartsList& z0, const std::array<double, 4>& margins)
+{
+    PartsList parts;
+    const auto raised = [](size_t n, double margin) {
+        return static_cast<size_t>(std::ceil(static_cast<double>(n) * (1.0 + margin) - 1e-9));
+    };
+    parts.balls = raised(z0.balls, margins[3]);
+    for (size_t k = 0; k < kStrutKindCount; ++k)
+    {
+        parts.struts[k] = raised(z0.struts[k], margins[k / static_cast<size_t>(kSizeCount)]);
+        parts.strut_count += parts.struts[k];
+    }
+    return parts;
+}
+
 bool fits(const PartCounts& need, const PartCounts& have)
 {
     for (size_t k = 0; k < need.size(); ++k)

@@ -5,6 +5,7 @@
 //! no more than the kits hold. Before a run only an estimate exists (a typical annealed model's
 //! strut mix per ball), so the ball budget keeps a margin and the result is checked again.
 
+#include <array>
 #include <string>
 
 #include "core/parts/kits.h"
@@ -19,6 +20,16 @@ inline constexpr double kKitFitMargin = 0.15;
 //! The parts of a typical finished model of `balls` balls: 2.7 struts per ball in the mix of the
 //! bunny annealed at 11 cells for 30 s (the page's estimate and the CLI's use the same mix).
 PartsList typical_parts(size_t balls);
+
+//! What annealing adds to Z0's parts, at most, per strut colour (blue, yellow, red) and for the balls:
+//! the kits named before a run are planned for Z0's parts plus these margins, so that they hold the
+//! finished model. Measured on the ten shared meshes with default runs (tests/bench/kit_estimate.sh,
+//! the table in docs/page.md); tests/bench/kit_estimate.py keeps a copy.
+inline constexpr std::array<double, 4> kEstimateMargins = {0.25, 0.25, 0.25, 0.10};
+
+//! The parts to plan kits for before a run: Z0's parts, each colour and the balls raised by its
+//! margin (rounded up).
+PartsList estimate_parts(const PartsList& z0, const std::array<double, 4>& margins = kEstimateMargins);
 
 //! Every count of `need` at most the same count of `have`.
 bool fits(const PartCounts& need, const PartCounts& have);

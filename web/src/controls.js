@@ -33,9 +33,20 @@ export function sizeText(mm) {
   return mm >= 1000 ? `${(mm / 1000).toFixed(1)} m` : `${Math.round(mm / 10)} cm`;
 }
 
+/**
+ * The kits a model of this estimate takes: the core's range, from Z0's own parts (`kit_plan_low`)
+ * to what holds the finished model (`kit_plan`: Z0's parts plus what annealing adds at most,
+ * measured on the shared meshes, docs/page.md); the buyer is told which end is safe.
+ */
+export function kitsText(e) {
+  if (!e.kit_plan) return '';
+  if (!e.kit_plan_low) return `about ${e.kit_plan}`;
+  return e.kit_plan_low === e.kit_plan ? e.kit_plan : `about ${e.kit_plan_low} to ${e.kit_plan} (buy ${e.kit_plan} to be sure)`;
+}
+
 /** What a model of this estimate costs: balls, struts, size and kits (2.2–2.9 struts per ball). */
 export function billText(e, balls = e.nodes) {
-  const kits = e.kit_plan ? `, kits: about ${e.kit_plan}` : '';
+  const kits = e.kit_plan ? `, kits: ${kitsText(e)}` : '';
   const size = Number.isFinite(e.size_mm) ? `, ${sizeText(e.size_mm)} across` : '';
   return `≈ ${balls} balls, ${Math.round(2.2 * balls)}–${Math.round(2.9 * balls)} struts${size}${kits}`;
 }

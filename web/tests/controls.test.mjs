@@ -3,7 +3,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { Controls, PRESETS, presetForSeconds, autoThreadCount, estimateText, adviceText, billText, sizeText, isLarge }
+import { Controls, PRESETS, presetForSeconds, autoThreadCount, estimateText, adviceText, billText, sizeText, isLarge,
+  kitsText }
   from '../src/controls.js';
 import { fakeRoot, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
 
@@ -121,6 +122,13 @@ test('automatic resolution: set on the slider with its message; a lost genus nee
   assert.doesNotMatch(el('estimate').textContent, /no grid up to 64 cells/);
   assert.equal(el('advice').children.some((c) => c.tagName === 'LABEL'), false);
   assert.equal(el('advice').hidden, false);
+});
+
+test('kits before a run: the core\'s range with its safe end, one plan when both ends agree', () => {
+  assert.equal(kitsText({ kit_plan: '2 Creator 3', kit_plan_low: '1 Creator 3 + 1 Basic' }),
+    'about 1 Creator 3 + 1 Basic to 2 Creator 3 (buy 2 Creator 3 to be sure)');
+  assert.equal(kitsText({ kit_plan: '1 Creator 3', kit_plan_low: '1 Creator 3' }), '1 Creator 3');
+  assert.equal(kitsText({ kit_plan: '' }), '');
 });
 
 test('a shown result of this shape and resolution is the one kit sentence; a new shape clears the line', async () => {
