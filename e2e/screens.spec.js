@@ -21,7 +21,7 @@ function layout(page) {
       // Shown ones only: closed <details>, hidden panels and the visually hidden file input (its
       // label is the control) are out of sight by design.
       .filter((el) => el.getClientRects().length > 0 && !el.closest('[hidden]') && !el.matches('.visually-hidden'))
-      .filter((el) => getComputedStyle(el).visibility !== 'hidden');
+      .filter((el) => el.checkVisibility() && !(el.closest('details:not([open])') && el.tagName !== 'SUMMARY'));
     const unreachable = [];
     for (const el of controls) {
       el.scrollIntoView({ block: 'center', inline: 'nearest' });
@@ -36,6 +36,7 @@ function layout(page) {
       }
     }
     window.scrollTo(0, 0);
+    for (const aside of document.querySelectorAll('aside')) aside.scrollTop = 0; // the desktop's panels scroll
     return { viewer: { width: viewer.width, height: viewer.height, top: viewer.top }, controls: controls.length,
       unreachable, scrollWidth: document.documentElement.scrollWidth, innerWidth, innerHeight,
       columns: ['panel', 'results'].map((id) => document.getElementById(id).getBoundingClientRect().toJSON()) };

@@ -97,16 +97,18 @@ std::string plan_text(const KitPlan& plan)
 }
 
 // A bill for the finished model from Z0 across its cells: its size at real scale, and the kits.
-// The kits named ("kit_plan") hold Z0's parts plus what annealing adds at most (kit_fit.h's
-// estimate_parts, measured on the shared meshes), so buying them never falls short of the plan
-// after the run; "kit_plan_low" is the plan for Z0's own parts, the other end of the range.
+// The kits named ("kit_plan") are those that hold Z0's own parts: a default run never needed more
+// (kit_fit.h, measured on the shared meshes), so a buyer can trust them before the run;
+// "kit_plan_low" is what a default run typically needs (the measured median mix), the range's
+// other end.
 nlohmann::json size_estimate(const InitialModel& z0)
 {
     const auto& dims = z0.report.grid.dims;
     const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
-    const PartsList parts = parts_list(z0.model);
-    const KitPlan high = plan_kits(estimate_parts(parts));
-    const KitPlan low = plan_kits(parts);
+    const KitPlan high = plan_kits(parts_list(z0.model));
+    KitPlan low = plan_kits(annealed_parts(z0.model.nodes.size()));
+    if (low.parts_bought > high.parts_bought)
+        low = high; // a shape whose Z0 is already lean: the range is one plan
     size_t kits = 0;
     for (const auto& [kit, n] : high.kits)
         kits += n;
@@ -114,7 +116,8 @@ nlohmann::json size_estimate(const InitialModel& z0)
             {"kits", kits},
             {"kit_plan", plan_text(high)},
             {"kit_plan_parts", high.parts_bought},
-            {"kit_plan_low", plan_text(low)}};
+            {"kit_plan_low", plan_text(low)},
+            {"kit_plan_low_parts", low.parts_bought}};
 }
 
 std::string owned_text(const OwnedKits& owned)

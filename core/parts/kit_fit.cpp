@@ -28,16 +28,16 @@ PartsList typical_parts(size_t balls)
     return parts;
 }
 
-PartsList estimate_parts(const PartsList& z0, const std::array<double, 4>& margins)
+PartsList annealed_parts(size_t balls)
 {
+    // Struts per Z0 ball after a default 30 s run, median of the ten shared meshes (issue 38).
+    constexpr std::array<double, kStrutKindCount> kAnnealedPerBall = {0.263, 0.882, 0.096, 0.185, 0.604,
+                                                                      0.094, 0.062, 0.112, 0.045};
     PartsList parts;
-    const auto raised = [](size_t n, double margin) {
-        return static_cast<size_t>(std::ceil(static_cast<double>(n) * (1.0 + margin) - 1e-9));
-    };
-    parts.balls = raised(z0.balls, margins[3]);
+    parts.balls = balls;
     for (size_t k = 0; k < kStrutKindCount; ++k)
     {
-        parts.struts[k] = raised(z0.struts[k], margins[k / static_cast<size_t>(kSizeCount)]);
+        parts.struts[k] = static_cast<size_t>(std::ceil(kAnnealedPerBall[k] * static_cast<double>(balls)));
         parts.strut_count += parts.struts[k];
     }
     return parts;

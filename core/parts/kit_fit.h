@@ -21,15 +21,16 @@ inline constexpr double kKitFitMargin = 0.15;
 //! bunny annealed at 11 cells for 30 s (the page's estimate and the CLI's use the same mix).
 PartsList typical_parts(size_t balls);
 
-//! What annealing adds to Z0's parts, at most, per strut colour (blue, yellow, red) and for the balls:
-//! the kits named before a run are planned for Z0's parts plus these margins, so that they hold the
-//! finished model. Measured on the ten shared meshes with default runs (tests/bench/kit_estimate.sh,
-//! the table in docs/page.md); tests/bench/kit_estimate.py keeps a copy.
-inline constexpr std::array<double, 4> kEstimateMargins = {0.25, 0.25, 0.25, 0.10};
+//! The parts of a finished default run (30 s) from a Z0 of `balls` balls, as the median of the ten
+//! shared meshes per strut kind (tests/bench/kit_estimate.sh; the table is in docs/page.md): the
+//! typical end of the kits named before a run. The mix varies a lot with the shape (yellow Y1 from
+//! 0.47 to 1.0 per ball), so this is no bound; the safe end is Z0's own parts (see below).
+PartsList annealed_parts(size_t balls);
 
-//! The parts to plan kits for before a run: Z0's parts, each colour and the balls raised by its
-//! margin (rounded up).
-PartsList estimate_parts(const PartsList& z0, const std::array<double, 4>& margins = kEstimateMargins);
+//! Annealing never needed more than Z0's own parts: Z0 is all B1 (two per ball), the runs measured
+//! keep 34–100% of them, and the kits that hold Z0 hold 1.33 yellow and 0.8 red struts of each
+//! length per ball, more than any finished model measured (at most 1.01 and 0.22). So the kits
+//! planned for Z0's parts are the ones a buyer can trust before the run.
 
 //! Every count of `need` at most the same count of `have`.
 bool fits(const PartCounts& need, const PartCounts& have);

@@ -32,7 +32,8 @@ export function installApi(app, { ready, warmedUp, info, buildView = null }) {
     state: () => (app.running ? 'running' : 'idle'),
     progress: () => app.lastProgress,
     summary: () => app.bridge.summary(),
-    parts: () => app.bridge.parts(),
+    /** The parts report; with kits (`"2x creator3, 1x basic"`) also what they lack (`missing`). */
+    parts: (have) => app.bridge.parts(have),
     /** The page's address with the model in its fragment (#m=2.…). */
     shareLink: () => app.shareLink({ copy: false }),
     openLink: async (link) => {

@@ -268,6 +268,7 @@ export class App {
     this.showQuality(null);
     this.status.note('Running…');
     let final;
+    const t0 = performance.now();
     try {
       final = await this.bridge.run(opts);
     } catch (e) {
@@ -287,6 +288,10 @@ export class App {
       this.modelResolution = opts.size_cm > 0 ? 0 : opts.resolution;
     }
     const s = await this.refreshResults();
+    // What the run took besides its time, shown under the time for the next run of this shape.
+    if (final.state === 'done' && !opts.proposals && opts.seconds > 0) {
+      this.controls.setMeasuredSetup?.((performance.now() - t0) / 1000 - opts.seconds);
+    }
     if (final.state !== 'failed' && final.nodes > 0) {
       if (s?.stats?.resolution > 0) this.modelResolution = s.stats.resolution; // with a size: what it gave
       this.controls.setResult?.(this.modelResolution);

@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { Controls, PRESETS, presetForSeconds, autoThreadCount, estimateText, adviceText, billText, sizeText, isLarge,
-  kitsText }
+  kitsText, setupSeconds, setupText, SETUP }
   from '../src/controls.js';
 import { fakeRoot, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
 
@@ -124,11 +124,20 @@ test('automatic resolution: set on the slider with its message; a lost genus nee
   assert.equal(el('advice').hidden, false);
 });
 
-test('kits before a run: the core\'s range with its safe end, one plan when both ends agree', () => {
+test('kits before a run: the core\'s range, its safe end last; one plan when both ends agree', () => {
   assert.equal(kitsText({ kit_plan: '2 Creator 3', kit_plan_low: '1 Creator 3 + 1 Basic' }),
-    'about 1 Creator 3 + 1 Basic to 2 Creator 3 (buy 2 Creator 3 to be sure)');
+    'typically about 1 Creator 3 + 1 Basic, at most 2 Creator 3');
   assert.equal(kitsText({ kit_plan: '1 Creator 3', kit_plan_low: '1 Creator 3' }), '1 Creator 3');
   assert.equal(kitsText({ kit_plan: '' }), '');
+});
+
+test('the time a preset does not count: from the estimate\'s starting model, then from the last run', () => {
+  assert.equal(setupSeconds({ z0_seconds: 0.5 }), SETUP.perZ0 * 0.5 + SETUP.fixed);
+  assert.equal(setupSeconds({ z0_seconds: 0.5 }, 3.2), 3.2);
+  assert.equal(setupSeconds(null), 0);
+  assert.equal(setupText(2.2), 'Plus about 2.5 s to build the starting model and measure the result.');
+  assert.equal(setupText(12.1, true), 'Plus about 13 s to build the starting model and measure the result (the last run).');
+  assert.equal(setupText(0), '');
 });
 
 test('a shown result of this shape and resolution is the one kit sentence; a new shape clears the line', async () => {
