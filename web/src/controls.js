@@ -168,7 +168,7 @@ export class Controls {
     // No grid keeps the holes: the core's sentence says so and a run goes on (issue 26) without a
     // "run anyway" box, as there is nothing else to choose.
     this.noKeepingGrid = !a.kept;
-    this.autoMessage = `Resolution chosen for this shape: ${a.message.replace(/\.$/, '')}.`;
+    this.autoMessage = `Resolution chosen for this shape: ${String(a.message ?? '').replace(/\.$/, '')}.`;
     clearTimeout(this.estimateTimer); // this answer is the estimate of this resolution
     this.estimateSerial++;
     this.showEstimate(a, a.resolution);
