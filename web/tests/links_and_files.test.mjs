@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
-import { linkFromHash, urlWithFragment, copyText } from '../src/share_link.js';
+import { linkFromHash, urlWithFragment, copyText, resolutionFromLink, fragmentWithResolution } from '../src/share_link.js';
 import { modelBaseName, exportFileName, fileNameFromUrl } from '../src/file_names.js';
 import { FORMATS } from '../src/downloads.js';
 import { SAMPLES, DEFAULT_SAMPLE } from '../src/samples.js';
@@ -83,4 +83,15 @@ test('samples: unique ids, the default among them, mesh files present, credited,
     assert.ok(s.resolution >= min && s.resolution <= max, `${s.id} resolution ${s.resolution}`);
     assert.match(s.credit, /CC BY [34]\.0/);
   }
+});
+
+test('a link carries the resolution its model was made at (r=, beside m=), which the page reads back', () => {
+  assert.equal(fragmentWithResolution('m=2.AbC', 22), 'm=2.AbC&r=22');
+  assert.equal(fragmentWithResolution('m=2.AbC', 0), 'm=2.AbC'); // unknown: no r
+  assert.equal(resolutionFromLink('http://x/#m=2.AbC&r=22'), 22);
+  assert.equal(resolutionFromLink('m=2.AbC&r=8'), 8);
+  assert.equal(resolutionFromLink('#r=12&m=2.AbC'), 12);
+  assert.equal(resolutionFromLink('m=2.Ar=5'), 0); // inside the model's base64, not a parameter
+  assert.equal(resolutionFromLink('m=2.AbC&r=abc'), 0);
+  assert.equal(linkFromHash('#m=2.AbC&r=22'), 'm=2.AbC&r=22'); // the core skips the other parameter
 });
