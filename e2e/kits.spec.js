@@ -52,7 +52,7 @@ test('size field, kits picker and Fit my kits on the bunny', async ({ page }) =>
   await page.click('#fit-kits');
   await expect(page.locator('#kit-fit')).toContainText('Fit my kits (1 x Creator 3):', { timeout: 30_000 });
   const line = await page.locator('#kit-fit').textContent();
-  const [, cells, target] = line.match(/: (\d+) cells, about \d+ cm, target (\d+) balls/);
+  const [, cells, target] = line.match(/: (\d+) cells, target (\d+) balls/);
   expect(await page.inputValue('#resolution')).toBe(cells);
   expect(await page.inputValue('#target')).toBe(target);
   expect(await page.isChecked('#size-mode')).toBe(false);

@@ -88,22 +88,36 @@ std::string guarded(F&& body)
     }
 }
 
-// A rough bill for a finished model of `balls` balls from Z0 across `cells` B1 cells: its size at
-// real scale, and the kits to buy for the strut mix of a typical finished model (kit_fit.h's
-// typical_parts, the mix the CLI's kit estimate uses), planned as `zomeify parts` plans.
-nlohmann::json size_estimate(const InitialModel& z0, size_t balls)
+std::string plan_text(const KitPlan& plan)
+{
+    std::string text;
+    for (const auto& [kit, n] : plan.kits)
+        text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
+    return text;
+}
+
+// A bill for the finished model from Z0 across its cells: its size at real scale, and the kits.
+// The kits named ("kit_plan") are those that hold Z0's own parts: a default run never needed more
+// (kit_fit.h, measured on the shared meshes), so a buyer can trust them before the run;
+// "kit_plan_low" is what a default run typically needs (the measured median mix), the range's
+// other end.
+nlohmann::json size_estimate(const InitialModel& z0)
 {
     const auto& dims = z0.report.grid.dims;
     const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
-    const KitPlan plan = plan_kits(typical_parts(balls));
+    const KitPlan high = plan_kits(parts_list(z0.model));
+    KitPlan low = plan_kits(annealed_parts(z0.model.nodes.size()));
+    if (low.parts_bought > high.parts_bought)
+        low = high; // a shape whose Z0 is already lean: the range is one plan
     size_t kits = 0;
-    std::string text;
-    for (const auto& [kit, n] : plan.kits)
-    {
+    for (const auto& [kit, n] : high.kits)
         kits += n;
-        text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
-    }
-    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0}, {"kits", kits}, {"kit_plan", text}};
+    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0},
+            {"kits", kits},
+            {"kit_plan", plan_text(high)},
+            {"kit_plan_parts", high.parts_bought},
+            {"kit_plan_low", plan_text(low)},
+            {"kit_plan_low_parts", low.parts_bought}};
 }
 
 std::string owned_text(const OwnedKits& owned)
@@ -208,7 +222,8 @@ std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface& s, int 
     out["surface_genus"] = s.report.genus;
     out["kept"] = z0.report.valid && z0.report.topology.genus == s.report.genus;
     out["seconds"] = z0.report.seconds;
-    out.update(size_estimate(z0, z0.model.nodes.size()));
+    out["z0_seconds"] = z0.report.seconds; // kept when `seconds` is the automatic search's time
+    out.update(size_estimate(z0));
     return {std::move(z0), std::move(out)};
 }
 
@@ -354,6 +369,10 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
         const LoadedSurface& s = *surface_;
         PipelineOptions po = pipeline_options(options);
         po.advisor_seconds = 3.0;
+        // The page already holds the core's answer on holes for this resolution (estimate, or the
+        // automatic choice) and says it once; the run does not search again (up to 3 s before
+        // annealing, which a time preset does not count) for a second, possibly different, hint.
+        po.advise = false;
         if (options.size_cm > 0.0)
             po.b1 = b1_for_size_cm(longest_side(s.mesh), options.size_cm); // as `run --size-cm`
         AnnealOptions& a = po.anneal;

@@ -21,7 +21,7 @@ const nodeModules = path.resolve(here, '..', 'node_modules');
 const types = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript',
   '.css': 'text/css', '.json': 'application/json', '.wasm': 'application/wasm', '.svg': 'image/svg+xml',
-  '.png': 'image/png', '.obj': 'text/plain', '.md': 'text/plain; charset=utf-8',
+  '.png': 'image/png', '.ico': 'image/x-icon', '.obj': 'text/plain', '.md': 'text/plain; charset=utf-8',
 };
 
 function candidates(urlPath) {

@@ -28,6 +28,21 @@ PartsList typical_parts(size_t balls)
     return parts;
 }
 
+PartsList annealed_parts(size_t balls)
+{
+    // Struts per Z0 ball after a default 30 s run, median of the ten shared meshes (issue 38).
+    constexpr std::array<double, kStrutKindCount> kAnnealedPerBall = {0.263, 0.882, 0.096, 0.185, 0.604,
+                                                                      0.094, 0.062, 0.112, 0.045};
+    PartsList parts;
+    parts.balls = balls;
+    for (size_t k = 0; k < kStrutKindCount; ++k)
+    {
+        parts.struts[k] = static_cast<size_t>(std::ceil(kAnnealedPerBall[k] * static_cast<double>(balls)));
+        parts.strut_count += parts.struts[k];
+    }
+    return parts;
+}
+
 bool fits(const PartCounts& need, const PartCounts& have)
 {
     for (size_t k = 0; k < need.size(); ++k)

@@ -5,6 +5,7 @@
 //! no more than the kits hold. Before a run only an estimate exists (a typical annealed model's
 //! strut mix per ball), so the ball budget keeps a margin and the result is checked again.
 
+#include <array>
 #include <string>
 
 #include "core/parts/kits.h"
@@ -19,6 +20,17 @@ inline constexpr double kKitFitMargin = 0.15;
 //! The parts of a typical finished model of `balls` balls: 2.7 struts per ball in the mix of the
 //! bunny annealed at 11 cells for 30 s (the page's estimate and the CLI's use the same mix).
 PartsList typical_parts(size_t balls);
+
+//! The parts of a finished default run (30 s) from a Z0 of `balls` balls, as the median of the ten
+//! shared meshes per strut kind (tests/bench/kit_estimate.sh; the table is in docs/page.md): the
+//! typical end of the kits named before a run. The mix varies a lot with the shape (yellow Y1 from
+//! 0.47 to 1.0 per ball), so this is no bound; the safe end is Z0's own parts (see below).
+PartsList annealed_parts(size_t balls);
+
+//! Annealing never needed more than Z0's own parts: Z0 is all B1 (two per ball), the runs measured
+//! keep 34–100% of them, and the kits that hold Z0 hold 1.33 yellow and 0.8 red struts of each
+//! length per ball, more than any finished model measured (at most 1.01 and 0.22). So the kits
+//! planned for Z0's parts are the ones a buyer can trust before the run.
 
 //! Every count of `need` at most the same count of `have`.
 bool fits(const PartCounts& need, const PartCounts& have);

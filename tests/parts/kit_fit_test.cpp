@@ -55,6 +55,18 @@ TEST(KitFit, TypicalPartsScaleWithTheBalls)
     EXPECT_LE(p.strut_count, 279u);
 }
 
+TEST(KitFit, AnnealedPartsAreTheMeasuredMedianMix)
+{
+    // Issue 38: the typical end of the kits named before a run, 2.34 struts per Z0 ball; B1 and Y1
+    // lead (0.882 and 0.604 per ball), so 1,000 balls typically take 882 B1 and 604 Y1.
+    const PartsList p = annealed_parts(1000);
+    EXPECT_EQ(p.balls, 1000u);
+    EXPECT_EQ(p.struts[static_cast<size_t>(StrutKind::B1)], 882u);
+    EXPECT_EQ(p.struts[static_cast<size_t>(StrutKind::Y1)], 604u);
+    EXPECT_EQ(p.strut_count, 2343u);
+    EXPECT_EQ(annealed_parts(0).strut_count, 0u);
+}
+
 TEST(KitFit, ShrunkBudgetFollowsTheScarcestPart)
 {
     const PartCounts have = creator3();

@@ -32,7 +32,8 @@ export function installApi(app, { ready, warmedUp, info, buildView = null }) {
     state: () => (app.running ? 'running' : 'idle'),
     progress: () => app.lastProgress,
     summary: () => app.bridge.summary(),
-    parts: () => app.bridge.parts(),
+    /** The parts report; with kits (`"2x creator3, 1x basic"`) also what they lack (`missing`). */
+    parts: (have) => app.bridge.parts(have),
     /** The page's address with the model in its fragment (#m=2.…). */
     shareLink: () => app.shareLink({ copy: false }),
     openLink: async (link) => {
@@ -46,6 +47,10 @@ export function installApi(app, { ready, warmedUp, info, buildView = null }) {
     /** Fractions of the canvas in each strut colour (a pixel check of the rendering). */
     colourCoverage: () => app.viewer.colourCoverage(),
     fit: () => app.viewer.fit(),
+    /** The camera: {position, target} (mesh units); tests check that a drag or a pinch moved it. */
+    camera: () => ({ position: app.viewer.camera.position.toArray(), target: app.viewer.controls.target.toArray() }),
+    /** The estimate the controls show (the core's answer for the resolution on the slider), or null. */
+    estimate: () => app.controls.lastEstimate,
     /** The Build view: opens it (resolves with the plan: nodes, steps, figures, html) and shows step k (0-based). */
     openBuildView: () => buildView.open(),
     buildStep: (k) => buildView.show(k),

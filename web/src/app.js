@@ -3,7 +3,7 @@
 // never replace the model on screen.
 import { Event } from './protocol.js';
 import { SAMPLES, DEFAULT_SAMPLE, sampleUrl, fetchBytes } from './samples.js';
-import { pageUrlWith, copyText } from './share_link.js';
+import { pageUrlWith, copyText, resolutionFromLink, fragmentWithResolution } from './share_link.js';
 import { modelBaseName, fileNameFromUrl } from './file_names.js';
 import { missingText, ownedName, resultFitText } from './kits.js';
 
@@ -55,9 +55,13 @@ function holes(n) {
   return n === 0 ? 'no hole' : n === 1 ? '1 hole' : `${n} holes`;
 }
 
-/** "try 10 cells": a resolution whose model keeps the shape's holes (0: none known). */
+/**
+ * After a lost hole: "try 10 cells" when the core's answer for this resolution names one that keeps
+ * the holes; otherwise the page adds no advice of its own (0) and points to the core's note under
+ * the resolution, which says why (-1 when there is no such note: nothing is added).
+ */
 function tryText(keeping) {
-  return keeping > 0 ? `try ${keeping} cells` : 'try the resolution the controls suggest';
+  return keeping > 0 ? ` (try ${keeping} cells)` : keeping === 0 ? ' (the note under the resolution says why)' : '';
 }
 
 /**
@@ -72,7 +76,7 @@ export function resultText(s, surfaceGenus = null, keeping = 0) {
   if (!s.valid) return `${counts} · Not a closed Zome surface${s.validation ? `: ${s.validation}` : ''}`;
   if (surfaceGenus !== null && s.genus !== surfaceGenus) {
     return `${counts} · Warning: the shape has ${holes(surfaceGenus)} through it, this model has ${holes(s.genus)}` +
-      ` (${tryText(keeping)}).`;
+      `${tryText(keeping)}.`;
   }
   return `${counts} · a closed surface${surfaceGenus === null ? '' : ' with the shape\'s holes'}`;
 }
@@ -84,7 +88,7 @@ export function verdictText(s, surfaceGenus = null, keeping = 0) {
   if (Number.isFinite(gap)) parts.push(`largest gap ${Math.round(gap)} mm`);
   parts.push(s.clashes > 0 ? 'cannot be built as it is (parts clash)' : 'buildable');
   if (s.valid && surfaceGenus !== null && s.genus !== surfaceGenus) {
-    parts.push(`but it has ${holes(s.genus)} through it where the shape has ${holes(surfaceGenus)} (${tryText(keeping)})`);
+    parts.push(`but it has ${holes(s.genus)} through it where the shape has ${holes(surfaceGenus)}${tryText(keeping)}`);
   }
   return parts.join(', ');
 }
@@ -97,6 +101,7 @@ export class App {
     this.surfaceGenus = null; // of the loaded mesh
     this.modelOfSurface = false; // the model on screen was made from the loaded mesh
     this.queued = null; // a file dropped during a run, loaded when it ends
+    this.modelResolution = 0; // the resolution the model on screen was made at (0: not known)
     this.running = false;
     this.runCount = 0; // finished runs (scripts and tests wait on it)
     this.currentName = 'model';
@@ -118,14 +123,19 @@ export class App {
     this.status.error(message);
   }
 
-  /** Loads mesh or model bytes; returns {ok, kind?, error?}. `run` starts a run after a mesh. */
-  async loadBytes(name, bytes, { run = false, fit = true, chooseResolution = true, fresh = true } = {}) {
+  /**
+   * Loads mesh or model bytes; returns {ok, kind?, error?}. `run` starts a run after a mesh: true, or
+   * a function asked when the file really loads (the "run after loading" box: a file that waited for
+   * a run runs only if the box is ticked then). `after`: the message it follows (kept before its own).
+   */
+  async loadBytes(name, bytes, { run = false, fit = true, chooseResolution = true, fresh = true, after = '' } = {}) {
     if (this.running) {
       // Not lost: it loads (and runs, if asked) when this run ends, or at once after Cancel.
       this.queued = { name, bytes, options: { run, fit, chooseResolution, fresh } };
       this.status.note(`${name} will load when this run ends (Cancel to load it now).`);
       return { ok: true, queued: true };
     }
+    const note = (text) => this.status.note(after ? `${after} ${text}` : text);
     let result;
     const fitBefore = this.fitNext;
     this.fitNext = fit; // a model's snapshot event arrives before the reply
@@ -138,6 +148,7 @@ export class App {
     }
     this.lastError = null;
     this.currentName = modelBaseName(name);
+    const runNow = typeof run === 'function' ? run() : run;
     if (result.kind === 'mesh') {
       this.fitNext = fit; // the first model of a new shape is framed
       const r = result.report;
@@ -147,15 +158,16 @@ export class App {
       this.surfaceEl.textContent = `${name}: ${r.vertices} vertices, ${r.faces} triangles, ` +
         `${holes(r.genus)} through it` +
         (r.repaired?.length ? ` (repaired: ${r.repaired.join('; ')})` : '');
-      this.status.note(`${name} loaded.`);
+      note(`${name} loaded.`);
       if (chooseResolution) await this.chooseResolution();
       else this.controls.scheduleEstimate();
       // A run started meanwhile (Run pressed while the mesh loaded) takes the place of this one.
-      if (run && !this.running) return { ...result, run: await this.run() };
+      if (runNow && !this.running) return { ...result, run: await this.run() };
     } else {
       this.modelOfSurface = false;
-      this.status.note(`${name}: model loaded.`);
+      note(`${name}: model loaded.`);
       await this.refreshResults();
+      this.showModelResolution(this.shownSummary?.stats?.resolution);
     }
     return result;
   }
@@ -165,6 +177,7 @@ export class App {
     this.viewer.setSurfaceVisible?.(true);
     if (this.surfaceToggleEl) this.surfaceToggleEl.checked = true;
     this.modelOfSurface = false;
+    this.controls.shapeChanged?.(); // the last shape's estimate and advice go at once
     this.parts.clear();
     this.plot.reset();
     this.summaryEl.textContent = 'The model on screen was made before this shape was loaded: press Run for this one.';
@@ -207,6 +220,10 @@ export class App {
     // The sample's model was made from this mesh: its line now compares their holes.
     if (model && this.shownSummary) this.summaryEl.textContent = resultText(this.shownSummary, this.surfaceGenus);
     this.controls.set({ resolution: sample.resolution });
+    if (model) {
+      this.modelResolution = sample.resolution;
+      this.controls.setResult?.(sample.resolution); // its kit plan is the one under Parts
+    }
     this.status.note(`Sample: ${sample.label} (${sample.credit}). Drop your own mesh anywhere, or press Run.`);
     if (!model) await this.run();
   }
@@ -235,6 +252,7 @@ export class App {
     this.modelOfSurface = false;
     this.status.note('Model from the share link (not recomputed).');
     await this.refreshResults();
+    this.showModelResolution(resolutionFromLink(link));
     return { ok: true };
   }
 
@@ -250,6 +268,7 @@ export class App {
     this.showQuality(null);
     this.status.note('Running…');
     let final;
+    const t0 = performance.now();
     try {
       final = await this.bridge.run(opts);
     } catch (e) {
@@ -260,46 +279,80 @@ export class App {
       this.controls.setRunning(false);
     }
     this.lastProgress = final;
-    if (final.state !== 'failed' && final.nodes > 0) this.modelOfSurface = true; // else the old model stays
+    const how = final.state === 'cancelled' ? 'Cancelled; kept the best model' : 'Finished';
+    const ended = final.state === 'failed' ? '' : `${how} in ${final.seconds.toFixed(1)} s.`;
+    // The line says the run ended the moment Run is enabled again; the verdict follows it.
+    if (ended) this.status.note(`${ended} Reading the parts…`);
+    if (final.state !== 'failed' && final.nodes > 0) {
+      this.modelOfSurface = true; // else the old model stays
+      this.modelResolution = opts.size_cm > 0 ? 0 : opts.resolution;
+    }
     const s = await this.refreshResults();
-    const keeping = await this.keepingResolution(s, opts.resolution);
-    if (keeping) this.summaryEl.textContent = resultText(s, this.surfaceGenus, keeping);
+    // What the run took besides its time, shown under the time for the next run of this shape.
+    if (final.state === 'done' && !opts.proposals && opts.seconds > 0) {
+      this.controls.setMeasuredSetup?.((performance.now() - t0) / 1000 - opts.seconds);
+    }
+    if (final.state !== 'failed' && final.nodes > 0) {
+      if (s?.stats?.resolution > 0) this.modelResolution = s.stats.resolution; // with a size: what it gave
+      this.controls.setResult?.(this.modelResolution);
+    }
+    const keeping = await this.keepingResolution(s, opts);
+    if (keeping !== null) this.summaryEl.textContent = resultText(s, this.surfaceGenus, keeping);
     if (final.state === 'failed') this.fail(`run: ${final.error}`);
     else {
       this.lastError = null;
-      const how = final.state === 'cancelled' ? 'Cancelled; kept the best model' : 'Finished';
-      const verdict = s ? ` ${verdictText(s, this.modelOfSurface ? this.surfaceGenus : null, keeping)}.` : '';
-      this.status.note(`${how} in ${final.seconds.toFixed(1)} s.${verdict} ${final.note ? asSentence(final.note) : ''}`.trim());
+      const verdict = s ? ` ${verdictText(s, this.modelOfSurface ? this.surfaceGenus : null, keeping ?? -1)}.` : '';
+      // A lost hole is said once, by the verdict from the controls' answer; the run's own note then
+      // adds nothing (it would be a second voice on the same holes).
+      const note = final.note && keeping === null ? asSentence(final.note) : '';
+      this.status.note(`${ended}${verdict} ${note}`.trim());
     }
     this.loadQueued();
     return final;
   }
 
   /**
-   * When the run's model lost the shape's holes: the advisor's resolution that keeps them (the
-   * controls' estimate of this resolution has it, else the core is asked); 0 if none is known.
+   * When the run's model lost the shape's holes, what the result says about it (tryText): the
+   * resolution that keeps them from the core's answer for this resolution, the one the controls
+   * show, so the estimate, the advice and the result say the same thing; 0 when that answer names
+   * none (its note says why), -1 when there is no answer. null when no hole was lost.
    */
-  async keepingResolution(s, resolution) {
-    if (!s?.valid || !this.modelOfSurface || s.genus === this.surfaceGenus) return 0;
-    const e = this.controls.lastEstimate;
-    if (e?.resolution === resolution && e.advice_resolution > 0) return e.advice_resolution;
-    try {
-      return (await this.bridge.estimate(resolution)).advice_resolution || 0;
-    } catch {
-      return 0; // the line then points to the controls' advice
+  async keepingResolution(s, opts) {
+    if (!s?.valid || !this.modelOfSurface || this.surfaceGenus === null || s.genus === this.surfaceGenus) return null;
+    let e = this.controls.lastEstimate;
+    if (!(e && e.resolution === opts.resolution && !opts.size_cm)) {
+      try {
+        e = { ...(await this.bridge.estimate(opts.resolution)), resolution: opts.resolution };
+        this.controls.showEstimate?.(e, opts.resolution); // the controls show this same answer
+      } catch {
+        return -1;
+      }
     }
+    if (e.advice_resolution > 0 && e.advice_resolution !== opts.resolution) return e.advice_resolution;
+    return e.kept || !(e.advice || e.message) ? -1 : 0;
   }
 
-  /** The file dropped during the run, now that it has ended. */
+  /** The slider shows the resolution the model on screen was made at, when it is known. */
+  showModelResolution(resolution) {
+    this.modelResolution = resolution > 0 ? resolution : 0;
+    this.controls.setResult?.(0); // not a model of the loaded shape
+    if (this.modelResolution) this.controls.set({ resolution: this.modelResolution });
+  }
+
+  /**
+   * The file dropped during the run, now that it has ended: it follows the run's last message
+   * rather than replacing it, and runs only if "run after loading" says so now.
+   */
   loadQueued() {
     const q = this.queued;
     this.queued = null;
-    if (q) this.afterQueued = this.loadBytes(q.name, q.bytes, q.options);
+    if (q) this.afterQueued = this.loadBytes(q.name, q.bytes, { ...q.options, after: this.status.el?.textContent ?? '' });
   }
 
   async cancel() {
     if (!this.running) return;
     this.plot.hold();
+    this.status.note('Cancelling…');
     await this.bridge.cancel();
   }
 
@@ -342,7 +395,7 @@ export class App {
 
   async shareLink({ copy = true } = {}) {
     const { link } = await this.bridge.link();
-    const url = pageUrlWith(link);
+    const url = pageUrlWith(fragmentWithResolution(link, this.modelResolution));
     if (copy) {
       const ok = await copyText(url);
       this.status.note(ok ? `Share link copied (${url.length} characters).` : url);

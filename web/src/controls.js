@@ -33,9 +33,20 @@ export function sizeText(mm) {
   return mm >= 1000 ? `${(mm / 1000).toFixed(1)} m` : `${Math.round(mm / 10)} cm`;
 }
 
+/**
+ * The kits a model of this estimate takes, as the core says before a run: at most `kit_plan` (the
+ * kits that hold Z0's own parts: no default run measured needed more) and typically `kit_plan_low`
+ * (the measured median mix); docs/page.md has the table.
+ */
+export function kitsText(e) {
+  if (!e.kit_plan) return '';
+  if (!e.kit_plan_low) return `about ${e.kit_plan}`;
+  return e.kit_plan_low === e.kit_plan ? e.kit_plan : `typically about ${e.kit_plan_low}, at most ${e.kit_plan}`;
+}
+
 /** What a model of this estimate costs: balls, struts, size and kits (2.2–2.9 struts per ball). */
 export function billText(e, balls = e.nodes) {
-  const kits = e.kit_plan ? `, kits: about ${e.kit_plan}` : '';
+  const kits = e.kit_plan ? `, kits: ${kitsText(e)}` : '';
   const size = Number.isFinite(e.size_mm) ? `, ${sizeText(e.size_mm)} across` : '';
   return `≈ ${balls} balls, ${Math.round(2.2 * balls)}–${Math.round(2.9 * balls)} struts${size}${kits}`;
 }
@@ -43,6 +54,26 @@ export function billText(e, balls = e.nodes) {
 /** The estimate line for the chosen resolution (balls from the target when one is set). */
 export function estimateText(e, target) {
   return `The model: ${billText(e, target)}`;
+}
+
+// What a run takes besides the time chosen (issue 38: "quick (5 s)" took 9.7 s): building the
+// starting model before annealing and measuring the result after it. Before a run on a shape the
+// page knows only how long its starting model took to build for the estimate; measured on the
+// shared meshes (docs/page.md) the rest stays within SETUP.perZ0 × that + SETUP.fixed seconds.
+export const SETUP = { perZ0: 2, fixed: 1.5 };
+
+/** Seconds a run adds to its time: measured on this shape's last run, else from the estimate. */
+export function setupSeconds(e, measured = 0) {
+  if (measured > 0) return measured;
+  const z0 = e?.z0_seconds;
+  return Number.isFinite(z0) ? SETUP.perZ0 * z0 + SETUP.fixed : 0;
+}
+
+/** The line under the time: what the preset's time does not count. */
+export function setupText(seconds, measured = false) {
+  if (!(seconds > 0)) return '';
+  const s = seconds < 10 ? Math.ceil(seconds * 2) / 2 : Math.ceil(seconds);
+  return `Plus about ${s} s to build the starting model and measure the result${measured ? ' (the last run)' : ''}.`;
 }
 
 /** True when a model of this estimate deserves a warning before it is built. */
@@ -76,8 +107,11 @@ export class Controls {
     this.estimateSerial = 0;
     this.initialOnly = false; // API only: stop after Z0
     this.lastEstimate = null; // of the resolution shown, for the run's genus check
-    this.genusConsent = false; // the user chose to run at a resolution that loses the genus
+    this.genusConsent = false; // the user ticked "run anyway" (never ticked for them)
+    this.noKeepingGrid = false; // the core's automatic choice found no grid that keeps the holes
     this.autoMessage = '';
+    this.resultResolution = 0; // the model on screen is the loaded shape's, made at this resolution
+    this.measuredSetup = 0; // seconds the last run on this shape took besides its time (App sets it)
     this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
 
     this.el('resolution').addEventListener('input', () => this.set({ resolution: this.el('resolution').value }));
@@ -127,12 +161,41 @@ export class Controls {
       this.scheduleEstimate();
       return null;
     }
+    const serial = this.estimateSerial;
     const a = await autoResolution();
+    if (serial !== this.estimateSerial) return null; // another shape (or resolution) came meanwhile
     this.set({ resolution: a.resolution });
-    this.genusConsent = !a.kept; // no grid keeps the genus: say so and go on (issue 26)
-    this.autoMessage = `Resolution chosen for this shape: ${a.message}.`;
+    // No grid keeps the holes: the core's sentence says so and a run goes on (issue 26) without a
+    // "run anyway" box, as there is nothing else to choose.
+    this.noKeepingGrid = !a.kept;
+    this.autoMessage = `Resolution chosen for this shape: ${String(a.message ?? '').replace(/\.$/, '')}.`;
+    clearTimeout(this.estimateTimer); // this answer is the estimate of this resolution
+    this.estimateSerial++;
     this.showEstimate(a, a.resolution);
     return a;
+  }
+
+  /** A new shape was loaded: the last shape's estimate, advice and consent go at once. */
+  shapeChanged() {
+    clearTimeout(this.estimateTimer);
+    this.estimateSerial++;
+    this.autoMessage = '';
+    this.genusConsent = false;
+    this.noKeepingGrid = false;
+    this.resultResolution = 0;
+    this.measuredSetup = 0;
+    this.showEstimate(null, 0);
+    this.el('estimate').textContent = 'Choosing a resolution for this shape…';
+  }
+
+  /**
+   * The model on screen is the loaded shape's, made at `resolution` (0: it is not): while the
+   * controls show that resolution, its kit plan under Parts is the one kit sentence, so the
+   * estimate line names no kits of its own.
+   */
+  setResult(resolution) {
+    this.resultResolution = resolution > 0 ? resolution : 0;
+    if (this.lastEstimate) this.showEstimate(this.lastEstimate, this.lastEstimate.resolution);
   }
 
   /**
@@ -142,7 +205,9 @@ export class Controls {
   runBlocker() {
     const e = this.lastEstimate;
     if (this.sizeMode()) return checkSize(this.el('size-cm').value).error;
-    if (!e || e.kept || this.genusConsent || Number(this.el('resolution').value) !== e.resolution) return '';
+    if (!e || e.kept || this.genusConsent || this.noKeepingGrid || Number(this.el('resolution').value) !== e.resolution) {
+      return '';
+    }
     return `${adviceText(e, e.resolution)}. Use the suggested resolution, or tick "run anyway".`;
   }
 
@@ -170,8 +235,9 @@ export class Controls {
     if (o.resolution !== undefined) {
       // A new resolution: the automatic choice's note and any consent to lose the genus go.
       this.autoMessage = '';
-    this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
+      this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
       this.genusConsent = false;
+      this.noKeepingGrid = false;
       this.el('resolution').value = o.resolution;
       this.el('resolution-value').textContent = String(o.resolution);
       this.scheduleEstimate();
@@ -266,9 +332,12 @@ export class Controls {
     const fit = this.lastFit;
     const planned = fit?.possible && !this.sizeMode() && Number(this.el('resolution').value) === fit.resolution &&
       Number(this.el('target').value) === fit.target_nodes;
+    if (planned) {
+      out.textContent = this.fitText; // it already says the result is checked: once is enough
+      return;
+    }
     try {
-      const line = estimateFitText(await this.kitCheckFn(have, balls), balls);
-      out.textContent = planned ? `${this.fitText} ${line}` : line;
+      out.textContent = estimateFitText(await this.kitCheckFn(have, balls), balls);
     } catch (err) {
       out.textContent = err.message;
     }
@@ -291,6 +360,7 @@ export class Controls {
     if (!have) return fail('Choose the kits you own first (how many of each).');
     if (!this.fitKitsFn) return fail('The core is not ready yet.');
     const bound = this.sizeMode() && this.lastEstimate?.resolution > 0 ? this.lastEstimate.resolution : 0;
+    const sizeLimit = bound ? { cm: checkSize(this.el('size-cm').value).cm, resolution: bound } : null;
     let plan;
     try {
       plan = await this.fitKitsFn(have, bound, this.kitsMissed);
@@ -299,14 +369,21 @@ export class Controls {
     }
     this.lastFit = plan;
     if (plan.possible) this.set({ resolution: plan.resolution, target_nodes: plan.target_nodes });
-    this.fitText = fitPlanText(plan);
+    this.fitText = fitPlanText(plan, sizeLimit);
     out.textContent = this.fitText;
     return plan;
   }
 
+  /**
+   * Run and Cancel swap. A disabled button loses the keyboard focus to the page body, so the focus
+   * moves to the one that is enabled now (Run → Cancel, and back when the run ends).
+   */
   setRunning(running) {
-    this.el('run').disabled = running;
-    this.el('cancel').disabled = !running;
+    const [from, to] = running ? [this.el('run'), this.el('cancel')] : [this.el('cancel'), this.el('run')];
+    const hadFocus = globalThis.document?.activeElement === from;
+    to.disabled = false;
+    from.disabled = true;
+    if (hadFocus) to.focus();
   }
 
   scheduleEstimate() {
@@ -346,11 +423,23 @@ export class Controls {
     this.showEstimate(e, resolution);
   }
 
+  /** A run on this shape took `seconds` besides its time: the line under the time says so. */
+  setMeasuredSetup(seconds) {
+    this.measuredSetup = seconds > 0 ? seconds : 0;
+    this.showSetup(this.lastEstimate);
+  }
+
+  showSetup(e) {
+    const note = this.el('time-note');
+    if (note) note.textContent = setupText(setupSeconds(e, this.measuredSetup), this.measuredSetup > 0);
+  }
+
   /** The estimate line and, when the genus is lost, the advice with a button for its resolution. */
   showEstimate(e, resolution) {
     const out = this.el('estimate');
     const warn = this.el('advice');
     this.lastEstimate = e ? { ...e, resolution } : null;
+    this.showSetup(this.lastEstimate);
     warn.textContent = '';
     if (!e) {
       out.textContent = '';
@@ -362,11 +451,20 @@ export class Controls {
     const target = Number(this.el('target').value) || e.nodes;
     this.showKitFit(e);
     const asked = this.sizeMode() && e.size_cm ? `At ${e.size_cm} cm (about ${e.resolution} cells):` : '';
-    out.textContent = [this.autoMessage, asked, estimateText(e, target) + (isLarge(e) ? ' — a very large build.' : '')]
-      .filter(Boolean).join(' ');
+    // The automatic choice's sentence is said once: with the bill, or as the warning when no grid
+    // keeps the holes (then there is no other advice and no "run anyway" to tick).
+    const lost = !e.kept && this.autoMessage && this.noKeepingGrid;
+    const shown = this.resultResolution > 0 && this.resultResolution === resolution;
+    const bill = shown ? `The model on screen was made at ${resolution} cells; its parts and kit plan are under Parts.`
+      : estimateText(e, target) + (isLarge(e) ? ' — a very large build.' : '');
+    out.textContent = [lost ? '' : this.autoMessage, asked, bill].filter(Boolean).join(' ');
     warn.replaceChildren();
     warn.hidden = e.kept;
     if (e.kept) return;
+    if (lost) {
+      warn.append(this.autoMessage);
+      return;
+    }
     warn.append(adviceText(e, resolution) + '.');
     if (e.advice_resolution > 0 && e.advice_resolution !== resolution) this.appendSuggestion(warn, e.advice_resolution);
     const consent = document.createElement('label');

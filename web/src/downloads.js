@@ -6,7 +6,7 @@ import { exportFileName } from './file_names.js';
 import { zipStored } from './zip.js';
 
 export const FORMATS = {
-  vef: ['model.vef'], 'vef-struts': ['model.vef'], glb: ['model.glb'], obj: ['model.obj', 'model.mtl'],
+  vef: ['model.vef'], 'vef-struts': ['model-no-panels.vef'], glb: ['model.glb'], obj: ['model.obj', 'model.mtl'],
   json: ['model.zome.json'], csv: ['parts.csv'],
 };
 

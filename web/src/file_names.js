@@ -10,14 +10,16 @@ export function modelBaseName(fileName) {
 
 /**
  * A download's name from its template in downloads.js FORMATS: "model.obj" → "<base>.obj",
- * "parts.csv" → "<base>-parts.csv". Only the template's stem is replaced, once, and the base is
- * taken literally (String.replace would expand `$&` in it, and a second replace would hit a base
- * that itself contains "parts").
+ * "model-no-panels.vef" → "<base>-no-panels.vef" (two VEF buttons, two names), "parts.csv" →
+ * "<base>-parts.csv". Only the template's stem is replaced, once, and the base is taken literally
+ * (String.replace would expand `$&` in it, and a second replace would hit a base that itself
+ * contains "parts").
  */
 export function exportFileName(template, base) {
   const dot = template.indexOf('.');
   const stem = template.slice(0, dot), extension = template.slice(dot);
-  return (stem === 'parts' ? `${base}-parts` : base) + extension;
+  const suffix = stem === 'parts' ? '-parts' : stem.startsWith('model-') ? stem.slice(5) : '';
+  return base + suffix + extension;
 }
 
 /** The last path segment of a URL, decoded; "mesh" when empty. Never throws on a bad %-escape. */

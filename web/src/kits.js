@@ -74,10 +74,19 @@ export function resultFitText(report, owned) {
     : `Your kits (${owned}) hold every part of this model.`;
 }
 
-/** The fit plan (Session::fit_kits) as the sentence beside the button. */
-export function fitPlanText(plan) {
+/**
+ * The fit plan (Session::fit_kits) as the one sentence beside the button. It names no size: the
+ * estimate line above gives the model's size once. `sizeLimit` ({cm, resolution}) is the built size
+ * the user asked; when the plan stopped at it, the sentence says the size decided, not the kits.
+ */
+export function fitPlanText(plan, sizeLimit = null) {
   if (!plan.possible) return `Cannot fit your kits (${plan.owned}): ${plan.message}.`;
-  return `Fit my kits (${plan.owned}): ${plan.resolution} cells, about ${Math.round(plan.size_cm)} cm, ` +
-    `target ${plan.target_nodes} balls (kept below what the kits hold, as the strut mix varies);` +
-    ' press Run: the result is checked against your kits.' + (plan.genus_kept ? '' : ' No size within your kits keeps the shape\'s holes.');
+  const bySize = sizeLimit && sizeLimit.resolution > 0 && plan.resolution >= sizeLimit.resolution;
+  const why = bySize
+    ? ` Your size limit (at most ${Math.round(sizeLimit.cm)} cm) decided this, not the kits: they hold a larger model.`
+    : '';
+  return `Fit my kits (${plan.owned}): ${plan.resolution} cells, target ${plan.target_nodes} balls, ` +
+    'kept below what the kits hold as the strut mix varies.' + why +
+    (plan.genus_kept ? '' : ' No size within your kits keeps the shape\'s holes.') +
+    ' Press Run: the result is checked against your kits.';
 }

@@ -52,9 +52,14 @@ $('share').addEventListener('click', () => app.shareLink().catch((e) => status.e
 $('show-faces').addEventListener('change', (e) => viewer.setFacesVisible(e.target.checked));
 $('show-surface').addEventListener('change', (e) => viewer.setSurfaceVisible(e.target.checked));
 $('fit').addEventListener('click', () => viewer.fit());
+// Narrow screens: the panels under the viewer, one tap away.
+for (const b of document.querySelectorAll('[data-jump]')) {
+  b.addEventListener('click', () => $(b.dataset.jump).scrollIntoView({ behavior: 'smooth', block: 'start' }));
+}
 setupFileInput({
   dropTarget: document.body, picker: $('file'), overlay: $('drop-overlay'),
-  onFile: (file) => app.loadFile(file, { run: $('autorun').checked }),
+  // Asked when the file loads: a file that waited for a run runs only if the box is ticked then.
+  onFile: (file) => app.loadFile(file, { run: () => $('autorun').checked }),
 });
 for (const s of SAMPLES) {
   const b = document.createElement('button');

@@ -9,6 +9,20 @@ export function linkFromHash(hash) {
   return /(^|&)m=/.test(fragment) ? fragment : null;
 }
 
+/**
+ * The resolution a link's model was made at (`r=22` beside `m=…`, which the page adds: the model's
+ * own data has no resolution), or 0. Pure (tests).
+ */
+export function resolutionFromLink(link) {
+  const m = /(?:^|[#&])r=(\d{1,3})(?:&|$)/.exec(String(link));
+  return m ? Number(m[1]) : 0;
+}
+
+/** The fragment `m=…` with the model's resolution beside it (none when unknown). */
+export function fragmentWithResolution(fragment, resolution) {
+  return resolution > 0 ? `${fragment}&r=${resolution}` : fragment;
+}
+
 export function pageUrlWith(fragment) {
   return urlWithFragment(window.location.href, fragment);
 }

@@ -127,21 +127,42 @@ test('a file dropped during a run is not lost: it waits, is announced, and loads
   await running;
   await t.app.afterQueued;
   assert.deepEqual(t.bridge.calls, [['load', 'next.obj']]);
-  assert.equal(t.statusEl.textContent, 'next.obj loaded.');
+  // The run's own line stays, the load follows it (issue 38: the cancel message no longer vanished).
+  assert.equal(t.statusEl.textContent, 'Finished in 1.0 s. 5 balls, buildable. next.obj loaded.');
+});
+
+test('a waiting file runs only if "run after loading" is ticked when it loads; the end is said at once', async () => {
+  let finish;
+  const t = makeApp({ run: () => new Promise((resolve) => { finish = resolve; }) });
+  let autorun = true;
+  const running = t.app.run();
+  await t.app.loadBytes('next.obj', new ArrayBuffer(1), { run: () => autorun });
+  autorun = false; // unticked while the file waited
+  const lines = [];
+  t.controls.setRunning = (r) => { if (!r) queueMicrotask(() => lines.push(t.statusEl.textContent)); };
+  finish({ state: 'cancelled', seconds: 2, nodes: 5, note: '' });
+  await running;
+  await t.app.afterQueued;
+  assert.equal(lines[0], 'Cancelled; kept the best model in 2.0 s. Reading the parts…'); // not "Running…"
+  assert.deepEqual(t.bridge.calls, [['load', 'next.obj']]); // loaded, not run
+  assert.equal(t.app.runCount, 1);
+  assert.match(t.statusEl.textContent, /^Cancelled; kept the best model in 2\.0 s\..* next\.obj loaded\.$/);
 });
 
 test('result line and verdict in plain words: a lost hole is flagged, clashes are named', () => {
   const s = { balls: 256, struts: 600, by_kind: { B0: 600 }, valid: true, genus: 0, clashes: 0,
     stats: { fidelity: { hausdorff_mm: 31.4 } } };
   assert.equal(resultText(s, 1), '256 balls, 600 struts (B0 600) · Warning: the shape has 1 hole through it, ' +
-    'this model has no hole (try the resolution the controls suggest).');
+    'this model has no hole (the note under the resolution says why).');
+  assert.equal(resultText(s, 1, -1), '256 balls, 600 struts (B0 600) · Warning: the shape has 1 hole through it, ' +
+    'this model has no hole.');
   assert.equal(resultText({ ...s, genus: 1 }, 1), "256 balls, 600 struts (B0 600) · a closed surface with the shape's holes");
   assert.equal(resultText(s, null), '256 balls, 600 struts (B0 600) · a closed surface');
   assert.equal(resultText({ ...s, valid: false, validation: 'open at 2 edges' }),
     '256 balls, 600 struts (B0 600) · Not a closed Zome surface: open at 2 edges');
   assert.equal(verdictText({ ...s, genus: 1 }, 1), '256 balls, largest gap 31 mm, buildable');
   assert.equal(verdictText(s, 1), '256 balls, largest gap 31 mm, buildable, but it has no hole through it where the shape ' +
-    'has 1 hole (try the resolution the controls suggest)');
+    'has 1 hole (the note under the resolution says why)');
   assert.equal(resultText(s, 1, 10), '256 balls, 600 struts (B0 600) · Warning: the shape has 1 hole through it, ' +
     'this model has no hole (try 10 cells).');
   assert.equal(verdictText(s, 1, 10), '256 balls, largest gap 31 mm, buildable, but it has no hole through it where the ' +

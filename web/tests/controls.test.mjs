@@ -3,7 +3,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { Controls, PRESETS, presetForSeconds, autoThreadCount, estimateText, adviceText, billText, sizeText, isLarge }
+import { Controls, PRESETS, presetForSeconds, autoThreadCount, estimateText, adviceText, billText, sizeText, isLarge,
+  kitsText, setupSeconds, setupText, SETUP }
   from '../src/controls.js';
 import { fakeRoot, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
 
@@ -116,7 +117,44 @@ test('automatic resolution: set on the slider with its message; a lost genus nee
     surface_genus: 1, message: 'no grid up to 64 cells keeps the hole through it', size_mm: 900 }));
   clearTimeout(controls.estimateTimer);
   assert.equal(controls.runBlocker(), '');
-  assert.match(el('estimate').textContent, /no grid up to 64 cells/);
+  // Said once, as the warning; nothing to tick (issue 38: no "run anyway" box is ticked for the user).
+  assert.match(el('advice').text, /no grid up to 64 cells/);
+  assert.doesNotMatch(el('estimate').textContent, /no grid up to 64 cells/);
+  assert.equal(el('advice').children.some((c) => c.tagName === 'LABEL'), false);
+  assert.equal(el('advice').hidden, false);
+});
+
+test('kits before a run: the core\'s range, its safe end last; one plan when both ends agree', () => {
+  assert.equal(kitsText({ kit_plan: '2 Creator 3', kit_plan_low: '1 Creator 3 + 1 Basic' }),
+    'typically about 1 Creator 3 + 1 Basic, at most 2 Creator 3');
+  assert.equal(kitsText({ kit_plan: '1 Creator 3', kit_plan_low: '1 Creator 3' }), '1 Creator 3');
+  assert.equal(kitsText({ kit_plan: '' }), '');
+});
+
+test('the time a preset does not count: from the estimate\'s starting model, then from the last run', () => {
+  assert.equal(setupSeconds({ z0_seconds: 0.5 }), SETUP.perZ0 * 0.5 + SETUP.fixed);
+  assert.equal(setupSeconds({ z0_seconds: 0.5 }, 3.2), 3.2);
+  assert.equal(setupSeconds(null), 0);
+  assert.equal(setupText(2.2), 'Plus about 2.5 s to build the starting model and measure the result.');
+  assert.equal(setupText(12.1, true), 'Plus about 13 s to build the starting model and measure the result (the last run).');
+  assert.equal(setupText(0), '');
+});
+
+test('a shown result of this shape and resolution is the one kit sentence; a new shape clears the line', async () => {
+  const { controls, el } = makeControls(async (r) => ({ nodes: 10 * r, struts: 20 * r, kept: true, genus: 1,
+    surface_genus: 1, size_mm: r * 75, kits: 1, kit_plan: '1 Creator 3' }));
+  el('resolution').value = '12';
+  await controls.updateEstimate();
+  assert.match(el('estimate').textContent, /kits: about 1 Creator 3/);
+  controls.setResult(12);
+  assert.equal(el('estimate').textContent, 'The model on screen was made at 12 cells; its parts and kit plan are under Parts.');
+  el('resolution').value = '14'; // another resolution: another model, with its own estimate
+  await controls.updateEstimate();
+  assert.match(el('estimate').textContent, /kits: about 1 Creator 3/);
+  controls.shapeChanged();
+  assert.equal(el('estimate').textContent, 'Choosing a resolution for this shape…');
+  assert.equal(controls.lastEstimate, null);
+  clearTimeout(controls.estimateTimer);
 });
 
 test('the form read as RunOptions: defaults, and empty or bad fields fall back', () => {

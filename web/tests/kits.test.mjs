@@ -39,8 +39,15 @@ test('sentences: before the run (estimate), after it (the result), and the fit p
     'Your kits (1x creator3) hold every part of this model.');
   assert.match(resultFitText({ missing: { R1: 3, balls: 0 } }, '1x creator3'), /do not hold this model: missing 3 R1\./);
   assert.equal(resultFitText({}, 'x'), '');
-  assert.match(fitPlanText({ possible: true, owned: '1 x Creator 3', resolution: 6, size_cm: 41.2, target_nodes: 96,
-    genus_kept: true }), /^Fit my kits \(1 x Creator 3\): 6 cells, about 41 cm, target 96 balls/);
+  const plan = { possible: true, owned: '1 x Creator 3', resolution: 6, size_cm: 41.2, target_nodes: 96, genus_kept: true };
+  assert.equal(fitPlanText(plan), 'Fit my kits (1 x Creator 3): 6 cells, target 96 balls, kept below what the kits ' +
+    'hold as the strut mix varies. Press Run: the result is checked against your kits.');
+  // Issue 38: no size of its own (the estimate line has the one size), and a plan stopped by the size
+  // asked says that the size, not the kits, decided it.
+  assert.match(fitPlanText(plan, { cm: 34, resolution: 6 }),
+    /Your size limit \(at most 34 cm\) decided this, not the kits: they hold a larger model\./);
+  assert.doesNotMatch(fitPlanText(plan, { cm: 34, resolution: 9 }), /size limit/);
+  assert.equal(fitPlanText(plan).match(/checked/g).length, 1);
   assert.equal(fitPlanText({ possible: false, owned: '1 x Basic', message: 'no size of this shape fits: …' }),
     'Cannot fit your kits (1 x Basic): no size of this shape fits: ….');
 });
@@ -100,7 +107,9 @@ test('kits picker: the line before the run says whether the estimate fits; Fit m
   assert.match(el('kit-fit').textContent, /^Fit my kits \(1x creator3\): 6 cells/);
   await controls.updateEstimate();
   await new Promise((r) => setTimeout(r, 0));
-  assert.match(el('kit-fit').textContent, /^Fit my kits .* a model of about 96 balls typically fits/);
+  // The plan's sentence alone, not the plan and the typical-fit line saying the same thing twice.
+  assert.match(el('kit-fit').textContent, /^Fit my kits \(1x creator3\): 6 cells.*checked against your kits\.$/);
+  assert.doesNotMatch(el('kit-fit').textContent, /typically fits/);
   controls.kitsMissed = true; // the run missed: the next plan shrinks from the result
   await controls.fitMyKits();
   clearTimeout(controls.estimateTimer);

@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { existsSync, readFileSync } from 'node:fs';
-import { linkFromHash, urlWithFragment, copyText } from '../src/share_link.js';
+import { linkFromHash, urlWithFragment, copyText, resolutionFromLink, fragmentWithResolution } from '../src/share_link.js';
 import { modelBaseName, exportFileName, fileNameFromUrl } from '../src/file_names.js';
 import { FORMATS } from '../src/downloads.js';
 import { SAMPLES, DEFAULT_SAMPLE } from '../src/samples.js';
@@ -51,13 +51,16 @@ test('the model\'s name drops the loaded file\'s extension (any case), and is ne
 
 test('download names: every format from its template; a base with "parts", "model" or "$&" is literal', () => {
   const names = Object.values(FORMATS).flat().map((t) => exportFileName(t, 'torus'));
-  assert.deepEqual(names, ['torus.vef', 'torus.vef', 'torus.glb', 'torus.obj', 'torus.mtl', 'torus.zome.json',
+  assert.deepEqual(names, ['torus.vef', 'torus-no-panels.vef', 'torus.glb', 'torus.obj', 'torus.mtl', 'torus.zome.json',
     'torus-parts.csv']);
   // Before file_names.js, 'model.vef' became 'parts-parts.vef' for a model named "parts".
   assert.equal(exportFileName('model.vef', 'parts'), 'parts.vef');
   assert.equal(exportFileName('parts.csv', 'bodyparts'), 'bodyparts-parts.csv');
   assert.equal(exportFileName('model.obj', 'shared-model'), 'shared-model.obj');
   assert.equal(exportFileName('model.glb', 'a$&b'), 'a$&b.glb');
+  // The two VEF buttons save under different names (issue 38).
+  assert.equal(new Set(names).size, names.length);
+  assert.equal(exportFileName('model-no-panels.vef', 'model'), 'model-no-panels.vef');
 });
 
 test('a URL\'s file name: decoded, query dropped, "mesh" for a directory, a bad %-escape kept as is', () => {
@@ -80,4 +83,15 @@ test('samples: unique ids, the default among them, mesh files present, credited,
     assert.ok(s.resolution >= min && s.resolution <= max, `${s.id} resolution ${s.resolution}`);
     assert.match(s.credit, /CC BY [34]\.0/);
   }
+});
+
+test('a link carries the resolution its model was made at (r=, beside m=), which the page reads back', () => {
+  assert.equal(fragmentWithResolution('m=2.AbC', 22), 'm=2.AbC&r=22');
+  assert.equal(fragmentWithResolution('m=2.AbC', 0), 'm=2.AbC'); // unknown: no r
+  assert.equal(resolutionFromLink('http://x/#m=2.AbC&r=22'), 22);
+  assert.equal(resolutionFromLink('m=2.AbC&r=8'), 8);
+  assert.equal(resolutionFromLink('#r=12&m=2.AbC'), 12);
+  assert.equal(resolutionFromLink('m=2.Ar=5'), 0); // inside the model's base64, not a parameter
+  assert.equal(resolutionFromLink('m=2.AbC&r=abc'), 0);
+  assert.equal(linkFromHash('#m=2.AbC&r=22'), 'm=2.AbC&r=22'); // the core skips the other parameter
 });
