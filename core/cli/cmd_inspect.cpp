@@ -13,10 +13,12 @@ namespace zomeify::cli {
 
 int cmd_inspect(const CommandArgs& argv)
 {
-    const Args args(argv, {}, {"--json"});
-    args.expect_positional(1, "one mesh file: zomeify inspect MESH [--json]");
+    const Args args(argv, {}, {"--json", "--thicken"});
+    args.expect_positional(1, "one mesh file: zomeify inspect MESH [--json] [--thicken]");
     const std::string& path = args.positional()[0];
-    const SurfaceReport report = diagnose(read_mesh_file(path));
+    PrepareOptions options;
+    options.thicken_sheets = args.has("--thicken");
+    const SurfaceReport report = diagnose(read_mesh_file(path), options);
     const size_t slash = path.find_last_of("/\\");
     const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
     std::cout << (args.has("--json") ? surface_report_json(report, name) : surface_report_table(report, name));

@@ -198,36 +198,36 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
 
 int cmd_run(const CommandArgs& argv)
 {
-    const Args args(
-        argv,
-        {"-o",
-         "--resolution",
-         "--b1",
-         "--target-nodes",
-         "--seconds",
-         "--proposals",
-         "--threads",
-         "--seed",
-         "--stats",
-         "--t0",
-         "--t-min",
-         "--t0-factor",
-         "--t-min-ratio",
-         "--operator-weights",
-         "--coverage-radius",
-         "--w-distance",
-         "--w-orientation",
-         "--w-fairing",
-         "--w-complexity",
-         "--w-surface",
-         "--surface-cap",
-         "--surface-spacing",
-         "--surface-zone",
-         "--w-fold",
-         "--size-cm",
-         "--have",
-         kObjUnitsOption},
-        {"--initial-only", "--fit-kits", "--paper-energy", "--no-clearance", "--allow-fold-overs", kNoFacesFlag});
+    const Args args(argv,
+                    {"-o",
+                     "--resolution",
+                     "--b1",
+                     "--target-nodes",
+                     "--seconds",
+                     "--proposals",
+                     "--threads",
+                     "--seed",
+                     "--stats",
+                     "--t0",
+                     "--t-min",
+                     "--t0-factor",
+                     "--t-min-ratio",
+                     "--operator-weights",
+                     "--coverage-radius",
+                     "--w-distance",
+                     "--w-orientation",
+                     "--w-fairing",
+                     "--w-complexity",
+                     "--w-surface",
+                     "--surface-cap",
+                     "--surface-spacing",
+                     "--surface-zone",
+                     "--w-fold",
+                     "--size-cm",
+                     "--have",
+                     kObjUnitsOption},
+                    {"--initial-only", "--fit-kits", "--paper-energy", "--no-clearance", "--allow-fold-overs",
+                     "--thicken", kNoFacesFlag});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())
@@ -248,7 +248,9 @@ int cmd_run(const CommandArgs& argv)
         throw InvalidInputError("give --target-nodes or --fit-kits, not both (--fit-kits chooses the ball count)");
     if (fit && args.has("--initial-only"))
         throw InvalidInputError("--fit-kits needs the annealer: drop --initial-only");
-    const PreparedSurface surface = prepare_surface(read_mesh_file(path));
+    PrepareOptions prepare;
+    prepare.thicken_sheets = args.has("--thicken");
+    const PreparedSurface surface = prepare_surface(read_mesh_file(path), prepare);
     if (args.has("--size-cm"))
         options.b1 = b1_for_size_cm(longest_side(surface.mesh), args.number("--size-cm", 0.0, -1e300, 1e300));
     const PartCounts have = kit_contents(owned);

@@ -59,13 +59,15 @@ std::string text_report(const ModelScore& s)
 
 int cmd_score(const CommandArgs& argv)
 {
-    const Args args(argv, {"--mesh", "--b0", "--samples"}, {"--json"});
+    const Args args(argv, {"--mesh", "--b0", "--samples"}, {"--json", "--thicken"});
     args.expect_positional(1, "one model file: zomeify score MODEL --mesh MESH [--b0 LENGTH] [--samples N] [--json]");
     const auto mesh_path = args.value("--mesh");
     if (!mesh_path)
         throw InvalidInputError("--mesh MESH is required: the surface to score the model against");
     ZomeModel model = read_model_file(args.positional()[0]);
-    const SurfaceProjector surface(load_surface(*mesh_path));
+    PrepareOptions prepare;
+    prepare.thicken_sheets = args.has("--thicken"); // the surface the model was made for
+    const SurfaceProjector surface(load_surface(*mesh_path, prepare));
     if (args.has("--b0"))
         model.transform = fit_translation(model, surface, args.number("--b0", 1.0, 1e-12, 1e12));
     else if (model.transform == ModelTransform{})

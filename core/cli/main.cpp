@@ -12,7 +12,8 @@ namespace zomeify::cli {
 const std::vector<Command>& commands()
 {
     static const std::vector<Command> list = {
-        {"inspect", "inspect MESH [--json]                 vertices, faces, closed, manifold, components, genus, bbox",
+        {"inspect",
+         "inspect MESH [--json] [--thicken]     vertices, faces, closed, manifold, components, genus, bbox, repairs",
          cmd_inspect},
         {"parts", "parts MODEL [--json | --csv] [--have KITS]  parts list and kit plan of a .zome.json or .vef model",
          cmd_parts},
@@ -25,14 +26,16 @@ const std::vector<Command>& commands()
          "steps MODEL [--json] [-o steps.html] [--up AXIS]  assembly sequence: steps of a few parts, from the table up",
          cmd_steps},
         {"score",
-         "score MODEL --mesh MESH [--b0 L] [--json]  energy, fold-overs and distance of a model against a mesh",
+         "score MODEL --mesh MESH [--b0 L] [--json] [--thicken]  energy, fold-overs and distance of a model against "
+         "a mesh",
          cmd_score},
         {"run",
          "run MESH -o OUT [-o OUT2 ...] [--resolution N | --b1 L | --size-cm CM] [--target-nodes N] [--seconds S | "
          "--proposals N]\n"
          "          [--threads T] [--seed K] [--t0 T | --t0-factor F] [--t-min T | --t-min-ratio R]\n"
          "          [--operator-weights I,A,S,R,F,M,N] [--coverage-radius B0S] [--initial-only] [--stats STATS.json]\n"
-         "          [--obj-units mm|m] [--no-faces]   Z0, then annealing\n"
+         "          [--obj-units mm|m] [--no-faces] [--thicken]   Z0, then annealing; --thicken: an open sheet is\n"
+         "          given a thickness instead of being refused\n"
          "          [--have KITS [--fit-kits]]   whether the model fits the kits you own; --fit-kits chooses the\n"
          "          size and ball count so that it does (checked on the result, up to 3 tries)",
          cmd_run},

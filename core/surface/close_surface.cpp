@@ -2,14 +2,17 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <numeric>
+#include <sstream>
 
 #include <Eigen/Geometry>
 
 #include "core/surface/face_parts.h"
 #include "core/surface/fill_holes.h"
 #include "core/surface/split_non_manifold.h"
+#include "core/surface/thicken_sheet.h"
 
 namespace zomeify {
 
@@ -79,7 +82,7 @@ std::string hole_sizes(std::vector<size_t> edges)
 
 } // namespace
 
-SurfaceClosing close_surface(TriangleMesh& mesh, std::vector<uint32_t>& origin)
+SurfaceClosing close_surface(TriangleMesh& mesh, std::vector<uint32_t>& origin, bool thicken)
 {
     SurfaceClosing out;
     const NonManifoldSplit split = split_non_manifold(mesh.positions, mesh.triangles, origin);
@@ -150,7 +153,20 @@ SurfaceClosing close_surface(TriangleMesh& mesh, std::vector<uint32_t>& origin)
         for (size_t p = 0; p < parts; ++p)
             if (kind[p] == sheet && (largest == parts || own[p] > own[largest]))
                 largest = p;
-        if (largest != parts)
+        if (largest != parts && thicken)
+        {
+            // The predictable closed version the user asked for: every sheet given a thickness.
+            std::vector<uint8_t> sheet_face(mesh.triangles.size(), 0);
+            for (size_t f = 0; f < original_faces; ++f)
+                sheet_face[f] = kind[part[f]] == sheet;
+            keep_faces(mesh, origin, out.source_face, sheet_face);
+            out.thickness = thicken_sheets(mesh, std::vector<uint8_t>(mesh.triangles.size(), 1));
+            for (size_t p = 0; p < parts; ++p)
+                out.thickened_sheets += kind[p] == sheet;
+            origin.assign(mesh.positions.size(), none);
+            out.source_face.assign(mesh.triangles.size(), none);
+        }
+        else if (largest != parts)
         {
             out.only_sheets = true;
             out.sheet_boundary_edges = rim[largest];
@@ -206,6 +222,15 @@ std::vector<std::string> describe_closing(const SurfaceClosing& c)
     if (c.sheets)
         lines.push_back("dropped " + plural(c.sheets, "open sheet", "open sheets") + " beside the solid (" +
                         plural(c.sheet_faces, "face", "faces") + ")");
+    if (c.thickened_sheets)
+    {
+        std::ostringstream t;
+        t << std::setprecision(3) << c.thickness;
+        lines.push_back("gave the open " + std::string(c.thickened_sheets == 1 ? "sheet" : "sheets") +
+                        " a thickness of " + t.str() + " (" +
+                        std::to_string(static_cast<int>(std::lround(100 * kSheetThicknessFraction))) +
+                        "% of the longest side) to make a solid");
+    }
     return lines;
 }
 

@@ -34,15 +34,19 @@ struct SurfaceClosing
     size_t sheet_faces = 0;
     size_t sheet_boundary_edges = 0; //!< of the largest sheet, when every part is one (the refusal)
     double sheet_patch_ratio = 0.0;  //!< its largest patch's area over its own area
-    bool only_sheets = false;        //!< every part is an open sheet: no solid to build
+    bool only_sheets = false;        //!< every part is an open sheet: no solid to build (without thicken)
+    size_t thickened_sheets = 0;     //!< with thicken: the sheets given a thickness
+    double thickness = 0.0;          //!< the thickness they got (mesh units)
     //! Per face of the result: the face it was before closing, or 0xFFFFFFFF for a patch.
     std::vector<uint32_t> source_face;
 };
 
 //! Repairs `mesh` in place (vertices are only appended or removed; `origin` maps each vertex to the
 //! input vertex it copies, or 0xFFFFFFFF for new ones). Faces must be oriented consistently where
-//! they can be (analyse_topology with orient); call analyse_topology again afterwards.
-SurfaceClosing close_surface(TriangleMesh& mesh, std::vector<uint32_t>& origin);
+//! they can be (analyse_topology with orient); call analyse_topology again afterwards. With
+//! `thicken`, a mesh that is only open sheets is made solid by giving them a thickness
+//! (thicken_sheet.h) instead of being refused.
+SurfaceClosing close_surface(TriangleMesh& mesh, std::vector<uint32_t>& origin, bool thicken = false);
 
 //! The repairs in plain words, one line each ("closed 2 small holes (3 edges each)").
 std::vector<std::string> describe_closing(const SurfaceClosing& c);

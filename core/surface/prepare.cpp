@@ -100,12 +100,14 @@ void describe_problems(SurfaceReport& r, const TopologyInfo& t, const std::vecto
     if (closing.only_sheets)
     {
         // Its edges and holes are the sheet's own: the one reason is that it has no inside.
-        r.problems.push_back("mesh is an open sheet, not a solid: its open edge (" +
-                             plural(closing.sheet_boundary_edges, "boundary edge", "boundary edges") +
-                             ") runs around it, and closing "
-                             "it would add " +
-                             std::to_string(static_cast<int>(std::lround(100 * closing.sheet_patch_ratio))) +
-                             "% of its area; give it a thickness or close it in a modeller first");
+        r.problems.push_back(
+            "mesh is an open sheet, not a solid: its open edge (" +
+            plural(closing.sheet_boundary_edges, "boundary edge", "boundary edges") +
+            ") runs around it, and closing "
+            "it would add " +
+            std::to_string(static_cast<int>(std::lround(100 * closing.sheet_patch_ratio))) +
+            "% of its area; give it a thickness (--thicken; on the page, 'Give it a thickness') or close it in "
+            "a modeller first");
         return;
     }
     if (t.non_manifold_edges)
@@ -282,9 +284,10 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
         !topo.non_orientable_components)
     {
         const size_t faces_before = out.mesh.triangles.size();
-        closing = close_surface(out.mesh, original);
+        closing = close_surface(out.mesh, original, options.thicken_sheets);
         const bool changed = closing.pinched_vertices || closing.split_edges || !closing.hole_edges.empty() ||
-                             closing.specks || closing.sheets || out.mesh.triangles.size() != faces_before;
+                             closing.specks || closing.sheets || closing.thickened_sheets ||
+                             out.mesh.triangles.size() != faces_before;
         if (changed && !closing.only_sheets)
         {
             // An open part's outward side was a guess; closed, its volume tells. Faces count as
@@ -302,6 +305,7 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
     r.separated_edges = closing.split_edges;
     r.dropped_specks = closing.specks;
     r.dropped_sheets = closing.sheets;
+    r.thickened_sheets = closing.thickened_sheets;
 
     // Parts that overlap are one solid: their inner walls go, the genus is the union's.
     OverlapMerge merged;
@@ -365,6 +369,9 @@ PreparedSurface prepare_surface(const PolygonSoup& soup, const PrepareOptions& o
     return prepared;
 }
 
-TriangleMesh load_surface(const std::string& path) { return prepare_surface(read_mesh_file(path)).mesh; }
+TriangleMesh load_surface(const std::string& path, const PrepareOptions& options)
+{
+    return prepare_surface(read_mesh_file(path), options).mesh;
+}
 
 } // namespace zomeify

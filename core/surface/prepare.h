@@ -40,6 +40,7 @@ struct SurfaceReport
     size_t dropped_specks = 0;             //!< parts under 1% of the mesh's size
     size_t dropped_sheets = 0;             //!< open sheets beside a solid
     size_t joined_overlapping_parts = 0;   //!< closed parts that overlap another, joined (merge_overlaps.h)
+    size_t thickened_sheets = 0;           //!< open sheets given a thickness (PrepareOptions::thicken_sheets)
 
     // What the input had before those repairs (the same as the result's fields when none applied).
     size_t input_holes = 0;
@@ -81,6 +82,9 @@ struct PrepareOptions
     double weld_tolerance = 1e-9;
     //! A triangle is degenerate if its area is at most this times the squared bounding-box diagonal.
     double degenerate_area = 1e-20;
+    //! A mesh that is only open sheets (a terrain, a mask) is given a thickness and becomes a solid
+    //! (`--thicken`, the page's "Give it a thickness"), instead of being refused.
+    bool thicken_sheets = false;
 };
 
 struct PreparedSurface
@@ -97,6 +101,6 @@ SurfaceReport diagnose(const PolygonSoup& soup, const PrepareOptions& options = 
 PreparedSurface prepare_surface(const PolygonSoup& soup, const PrepareOptions& options = {});
 
 //! read_mesh_file + prepare_surface.
-TriangleMesh load_surface(const std::string& path);
+TriangleMesh load_surface(const std::string& path, const PrepareOptions& options = {});
 
 } // namespace zomeify

@@ -101,6 +101,7 @@ std::string surface_report_json(const SurfaceReport& r, const std::string& name)
         {"dropped_specks", r.dropped_specks},
         {"dropped_sheets", r.dropped_sheets},
         {"joined_overlapping_parts", r.joined_overlapping_parts},
+        {"thickened_sheets", r.thickened_sheets},
     };
     j["input_defects"] = {
         {"holes", r.input_holes},

@@ -72,6 +72,23 @@ TEST(WildMeshPipeline, EveryAcceptedCorpusMeshGivesABuildableModelOfItsGenus)
     }
 }
 
+TEST(WildMeshPipeline, AThickenedTerrainGivesABuildablePlate)
+{
+    for (const surface_test::WildMesh& w : surface_test::wild_corpus())
+        if (w.name == "terrain patch")
+        {
+            PrepareOptions thicken;
+            thicken.thicken_sheets = true;
+            const PreparedSurface p = prepare_surface(w.soup, thicken);
+            const PipelineResult r = run_short(p);
+            expect_buildable(p, r);
+            std::printf("terrain patch, --thicken: %s; %zu balls\n", joined(p.report.repairs).c_str(),
+                        r.model.nodes.size());
+            return;
+        }
+    FAIL() << "the corpus has no terrain patch";
+}
+
 TEST(WildMeshPipeline, BunnyWithItsBaseCutAway)
 {
     ZOME_REQUIRE_SHARED();

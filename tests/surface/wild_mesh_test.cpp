@@ -194,6 +194,39 @@ TEST(SplitNonManifold, TwoCubesSharingAnEdgeBecomeTwoClosedCubes)
     EXPECT_TRUE(closed_and_oriented({positions, triangles}));
 }
 
+TEST(WildMeshes, OpenSheetsGivenAThicknessBecomeSlabs)
+{
+    // Asked for, every sheet the corpus refuses becomes a closed slab of the sheet's genus (0), 3% of
+    // its longest side thick: a single triangle a prism, the terrain and the bowl a plate.
+    PrepareOptions thicken;
+    thicken.thicken_sheets = true;
+    size_t sheets = 0;
+    for (const WildMesh& w : wild_corpus())
+    {
+        if (w.refusal.find("open sheet") == std::string::npos)
+            continue;
+        SCOPED_TRACE(w.name);
+        ++sheets;
+        const PreparedSurface p = prepare_surface(w.soup, thicken);
+        EXPECT_EQ(p.report.genus, 0);
+        EXPECT_EQ(p.report.thickened_sheets, 1u);
+        EXPECT_TRUE(closed_and_oriented(p.mesh));
+        EXPECT_GT(signed_volume(p.mesh), 0.0);
+        EXPECT_NE(joined(p.report.repairs).find("gave the open sheet a thickness of"), std::string::npos)
+            << joined(p.report.repairs);
+        // Without the option the same mesh is still refused.
+        EXPECT_FALSE(diagnose(w.soup).ok());
+    }
+    EXPECT_EQ(sheets, 3u);
+    // A unit square: a 1 x 1 x 0.03 slab, 12 triangles.
+    PolygonSoup quad;
+    quad.positions = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)};
+    quad.polygons = {{0, 1, 2, 3}};
+    const PreparedSurface slab = prepare_surface(quad, thicken);
+    EXPECT_EQ(slab.mesh.triangles.size(), 12u);
+    EXPECT_NEAR(signed_volume(slab.mesh), 0.03, 1e-12);
+}
+
 TEST(WildMeshes, ThePointCloudFileIsRefusedInOneLine)
 {
     const PolygonSoup soup = read_mesh_buffer(bytes_of("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"), "cloud.obj");
