@@ -46,3 +46,37 @@ test('a torus with three holes is repaired, the repairs are shown, and the model
   expect(progress.genus).toBe(1);
   await expectNoPageErrors(errors);
 });
+
+/** OBJ of rolling hills over a square: an open sheet, refused until it is given a thickness. */
+function terrainObj(n = 16) {
+  const v = [];
+  const f = [];
+  for (let i = 0; i <= n; i++) {
+    for (let j = 0; j <= n; j++) v.push([i / n, j / n, 0.15 * Math.sin(3 * i / n) * Math.cos(4 * j / n)]);
+  }
+  const at = (i, j) => i * (n + 1) + j + 1;
+  for (let i = 0; i < n; i++) {
+    for (let j = 0; j < n; j++) f.push([at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)]);
+  }
+  return v.map((p) => `v ${p.join(' ')}`).join('\n') + '\n' + f.map((q) => `f ${q.join(' ')}`).join('\n') + '\n';
+}
+
+test('a terrain patch is refused as an open sheet, and "Give it a thickness" makes a model of it', async ({ page }) => {
+  const { errors } = await openPage(page);
+  await page.evaluate(() => window.zomeify.setOptions({ seconds: 1 }));
+  const before = await summary(page);
+  await pickFile(page, 'terrain.obj', new TextEncoder().encode(terrainObj()));
+  const status = page.locator('#status');
+  await expect(status).toHaveClass(/error/, { timeout: 20_000 });
+  await expect(status).toContainText('terrain.obj: mesh is an open sheet, not a solid');
+  expect(await summary(page)).toEqual(before); // the model on screen stays
+  const runsBefore = await page.evaluate(() => window.zomeify.runs());
+  await status.getByRole('button', { name: 'Give it a thickness' }).click();
+  await expect(page.locator('#surface-info')).toContainText('gave the open sheet a thickness', { timeout: 20_000 });
+  await page.waitForFunction((n) => window.zomeify.runs() > n && window.zomeify.state() === 'idle', runsBefore,
+    { timeout: 120_000, polling: 100 });
+  const s = await summary(page);
+  expect(s.valid, s.validation).toBe(true);
+  expect((await page.evaluate(() => window.zomeify.progress())).genus).toBe(0);
+  await expectNoPageErrors(errors);
+});

@@ -32,7 +32,10 @@ val error_object(const std::string& message)
 class WebSession
 {
 public:
-    std::string load_mesh(const std::string& bytes, const std::string& name) { return s_.load_mesh(bytes, name); }
+    std::string load_mesh(const std::string& bytes, const std::string& name, bool thicken)
+    {
+        return s_.load_mesh(bytes, name, thicken);
+    }
     std::string load_model(const std::string& bytes, const std::string& name) { return s_.load_model(bytes, name); }
     std::string open_link(const std::string& link) { return s_.open_link(link); }
     std::string estimate(int resolution) { return s_.estimate(resolution); }

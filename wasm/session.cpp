@@ -148,7 +148,7 @@ Session::~Session()
 
 bool Session::busy() const { return run_ && !run_->get().finished(); }
 
-std::string Session::load_mesh(const std::string& bytes, const std::string& file_name)
+std::string Session::load_mesh(const std::string& bytes, const std::string& file_name, bool thicken)
 {
     return guarded([&] {
         if (busy())
@@ -162,7 +162,9 @@ std::string Session::load_mesh(const std::string& bytes, const std::string& file
             throw InvalidInputError(file_name + ": the file is empty");
         const std::span<const uint8_t> data(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size());
         PolygonSoup soup = read_mesh_buffer(data, file_name);
-        PreparedSurface prepared = prepare_surface(soup);
+        PrepareOptions prepare;
+        prepare.thicken_sheets = thicken;
+        PreparedSurface prepared = prepare_surface(soup, prepare);
         auto loaded = std::make_unique<LoadedSurface>();
         loaded->mesh = prepared.mesh;
         loaded->report = prepared.report;

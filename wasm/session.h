@@ -33,7 +33,8 @@ public:
 
     //! Reads and repairs a mesh file ({ok, kind:"mesh", report} or {ok:false, error}). On success
     //! the surface is replaced; the current model stays until a run replaces it.
-    std::string load_mesh(const std::string& bytes, const std::string& file_name);
+    //! `thicken`: an open sheet is given a thickness (PrepareOptions::thicken_sheets) instead of refused.
+    std::string load_mesh(const std::string& bytes, const std::string& file_name, bool thicken = false);
     //! Reads a model file (.zome.json, .json, .vef) and makes it the current model.
     std::string load_model(const std::string& bytes, const std::string& file_name);
     //! Opens a share link (whole URL, #m=… or m=…) as the current model.

@@ -4,7 +4,7 @@
 import { Event } from './protocol.js';
 import { SAMPLES, DEFAULT_SAMPLE, sampleUrl, fetchBytes } from './samples.js';
 import { pageUrlWith, copyText, resolutionFromLink, fragmentWithResolution } from './share_link.js';
-import { modelBaseName, fileNameFromUrl } from './file_names.js';
+import { modelBaseName, fileNameFromUrl, isModelFileName } from './file_names.js';
 import { missingText, ownedName, resultFitText } from './kits.js';
 
 /**
@@ -118,9 +118,10 @@ export class App {
     });
   }
 
-  fail(message) {
+  /** An error on the status line; `action` ({label, run}) adds a button that acts on it. */
+  fail(message, action = null) {
     this.lastError = message;
-    this.status.error(message);
+    this.status.error(message, action);
   }
 
   /**
@@ -128,10 +129,11 @@ export class App {
    * a function asked when the file really loads (the "run after loading" box: a file that waited for
    * a run runs only if the box is ticked then). `after`: the message it follows (kept before its own).
    */
-  async loadBytes(name, bytes, { run = false, fit = true, chooseResolution = true, fresh = true, after = '' } = {}) {
+  async loadBytes(name, bytes, { run = false, fit = true, chooseResolution = true, fresh = true, after = '',
+    thicken = false } = {}) {
     if (this.running) {
       // Not lost: it loads (and runs, if asked) when this run ends, or at once after Cancel.
-      this.queued = { name, bytes, options: { run, fit, chooseResolution, fresh } };
+      this.queued = { name, bytes, options: { run, fit, chooseResolution, fresh, thicken } };
       this.status.note(`${name} will load when this run ends (Cancel to load it now).`);
       return { ok: true, queued: true };
     }
@@ -139,11 +141,17 @@ export class App {
     let result;
     const fitBefore = this.fitNext;
     this.fitNext = fit; // a model's snapshot event arrives before the reply
+    // The bytes go to the worker; a copy lets an open sheet be loaded again with a thickness.
+    const retry = thicken || isModelFileName(name) ? null : bytes.slice(0);
     try {
-      result = await this.bridge.load(name, bytes);
+      result = await this.bridge.load(name, bytes, { thicken });
     } catch (e) {
       this.fitNext = fitBefore;
-      this.fail(e.message.startsWith(name) ? e.message : `${name}: ${e.message}`);
+      const sheet = retry && /open sheet, not a solid/.test(e.message);
+      this.fail(e.message.startsWith(name) ? e.message : `${name}: ${e.message}`, sheet ? {
+        label: 'Give it a thickness',
+        run: () => this.loadBytes(name, retry, { run, fit, chooseResolution, fresh, thicken: true }),
+      } : null);
       return { ok: false, error: this.lastError };
     }
     this.lastError = null;

@@ -56,7 +56,7 @@ export class CoreBridge {
     const { mesh, model } = this.kept;
     this.restarted = (async () => {
       await this.send(Request.INIT, { wasmBase: this.wasmBase, threaded: false });
-      if (mesh) await this.send(Request.LOAD, { name: mesh.name, bytes: mesh.bytes.slice(0) });
+      if (mesh) await this.send(Request.LOAD, { name: mesh.name, bytes: mesh.bytes.slice(0), thicken: mesh.thicken });
       if (model?.link) await this.send(Request.OPEN_LINK, { link: model.link });
       else if (model) await this.send(Request.LOAD, { name: model.name, bytes: model.bytes.slice(0) });
     })().catch((e) => this.emit(Event.FATAL, { error: `could not restart the core after cancel: ${e.message}` }))
@@ -121,11 +121,14 @@ export class CoreBridge {
     return this.send(type, fields, transfer);
   }
 
-  /** @param {string} name @param {ArrayBuffer} bytes (transferred; a copy is kept for a restart) */
-  async load(name, bytes) {
+  /**
+   * @param {string} name @param {ArrayBuffer} bytes (transferred; a copy is kept for a restart)
+   * @param {{thicken?: boolean}} options thicken: an open sheet is given a thickness, not refused
+   */
+  async load(name, bytes, { thicken = false } = {}) {
     const copy = this.info?.threaded === false ? bytes.slice(0) : null;
-    const result = await this.request(Request.LOAD, { name, bytes }, [bytes]);
-    if (copy) this.kept[result.kind === 'mesh' ? 'mesh' : 'model'] = { name, bytes: copy };
+    const result = await this.request(Request.LOAD, { name, bytes, thicken }, [bytes]);
+    if (copy) this.kept[result.kind === 'mesh' ? 'mesh' : 'model'] = { name, bytes: copy, thicken };
     return result;
   }
 

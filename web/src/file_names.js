@@ -3,6 +3,11 @@
 
 const MODEL_EXTENSION = /\.(zome\.json|json|vef|obj|stl|ply|off|gltf|glb)$/i;
 
+/** A model file (.zome.json, .json, .vef), not a mesh: the core reads it as a finished model. */
+export function isModelFileName(fileName) {
+  return /\.(zome\.json|json|vef)$/i.test(fileName);
+}
+
 /** "torus.zome.json" → "torus", "Bunny.STL" → "Bunny"; "model" when nothing is left. */
 export function modelBaseName(fileName) {
   return fileName.replace(MODEL_EXTENSION, '') || 'model';

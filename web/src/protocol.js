@@ -6,7 +6,7 @@
 /** Requests (page → worker). */
 export const Request = Object.freeze({
   INIT: 'init',           // {wasmBase, threaded}            → {threaded, maxThreads, defaults, schema}
-  LOAD: 'load',           // {name, bytes: ArrayBuffer}      → {kind: 'mesh'|'model', report?}
+  LOAD: 'load',           // {name, bytes: ArrayBuffer, thicken?} → {kind: 'mesh'|'model', report?}
   OPEN_LINK: 'openLink',  // {link}                          → {kind: 'model'}
   ESTIMATE: 'estimate',   // {resolution}                    → {nodes, struts, genus, surface_genus, kept, advice,
                           //                                    advice_resolution, size_mm, kits, kit_plan}

@@ -3,9 +3,20 @@ export class Status {
   constructor(el) {
     this.el = el;
   }
-  error(message) {
+  /** `action` ({label, run}): a button after the message (an open sheet's "Give it a thickness"). */
+  error(message, action = null) {
     this.el.textContent = message;
     this.el.className = 'status error';
+    if (action) {
+      const button = (this.el.ownerDocument || globalThis.document).createElement('button');
+      button.className = 'status-action';
+      button.textContent = action.label;
+      button.addEventListener('click', () => {
+        button.disabled = true;
+        action.run();
+      });
+      this.el.append(' ', button);
+    }
     console.warn('zomeify:', message);
   }
   note(message) {

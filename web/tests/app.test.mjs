@@ -277,3 +277,29 @@ test('a sample: its finished model, then its mesh; the result line compares thei
   assert.equal(t.summaryEl.textContent, "5 balls, 4 struts (B0 2, Y0 1, R0 1) · a closed surface with the shape's holes");
   assert.equal(t.bridge.calls.length, 0); // no run: the finished model is shown
 });
+
+test('an open sheet is refused with "Give it a thickness", which loads the same bytes again as a slab', async () => {
+  const t = makeApp();
+  t.statusEl.ownerDocument = fakeDocument();
+  const loads = [];
+  t.bridge.load = async (name, bytes, options) => {
+    loads.push({ name, size: bytes.byteLength, thicken: options?.thicken });
+    if (!options?.thicken) {
+      throw new Error('mesh is an open sheet, not a solid: its open edge (4 boundary edges) runs around it');
+    }
+    return { kind: 'mesh', report: { vertices: 8, faces: 12, genus: 0, repaired: ['gave the open sheet a thickness'] } };
+  };
+  const first = await t.app.loadBytes('terrain.obj', new ArrayBuffer(7), { chooseResolution: false });
+  assert.equal(first.ok, false);
+  const button = t.statusEl.children.find((c) => c.tagName === 'BUTTON');
+  assert.ok(button, 'the refusal offers a button');
+  assert.equal(button.textContent, 'Give it a thickness');
+  button.dispatch('click');
+  await new Promise((resolve) => setTimeout(resolve, 0));
+  assert.deepEqual(loads, [{ name: 'terrain.obj', size: 7, thicken: false }, { name: 'terrain.obj', size: 7, thicken: true }]);
+  assert.match(t.surfaceEl.textContent, /repaired: gave the open sheet a thickness/);
+  // Any other refusal offers nothing.
+  t.bridge.load = async () => { throw new Error('mesh has no faces'); };
+  await t.app.loadBytes('cloud.obj', new ArrayBuffer(3));
+  assert.equal(t.statusEl.children.length, 0);
+});

@@ -137,7 +137,7 @@ function warmUp() {
   const t0 = performance.now();
   const scratch = new core.Session();
   try {
-    parse(scratch.loadMesh(new TextEncoder().encode(OCTAHEDRON_OBJ), 'warm-up.obj'));
+    parse(scratch.loadMesh(new TextEncoder().encode(OCTAHEDRON_OBJ), 'warm-up.obj', false));
     parse(scratch.runBlocking(JSON.stringify(WARM_UP_RUN), () => false, 1));
     parse(scratch.parts(''));
   } finally {
@@ -148,8 +148,8 @@ function warmUp() {
 
 const handlers = {
   [Request.INIT]: init,
-  [Request.LOAD]: ({ name, bytes }) => {
-    const result = parse(session.loadMesh(new Uint8Array(bytes), name));
+  [Request.LOAD]: ({ name, bytes, thicken = false }) => {
+    const result = parse(session.loadMesh(new Uint8Array(bytes), name, thicken));
     if (result.kind === 'model') postSnapshot();
     return result;
   },

@@ -3,8 +3,9 @@
 // document with createElement and a body. Values are stored as strings, as real inputs do.
 export class FakeElement {
   constructor(tag = 'div', id = '') {
-    Object.assign(this, { tagName: tag.toUpperCase(), id, textContent: '', className: '', hidden: false,
+    Object.assign(this, { tagName: tag.toUpperCase(), id, className: '', hidden: false,
       disabled: false, children: [], parent: null, dataset: {}, style: {}, listeners: {} });
+    this._text = '';
     this.classes = new Set();
     this.classList = {
       add: (c) => this.classes.add(c),
@@ -13,6 +14,11 @@ export class FakeElement {
       toggle: (c, on) => (on ? this.classes.add(c) : this.classes.delete(c)),
     };
     this._value = '';
+  }
+  get textContent() { return this._text; }
+  set textContent(t) { // as in the DOM: the text replaces the children
+    this._text = t;
+    this.children = [];
   }
   get value() { return this._value; }
   set value(v) { this._value = String(v); }
