@@ -51,7 +51,9 @@ void least_area_patch(const std::vector<Vec3>& positions, const std::vector<uint
             for (size_t m = i + 1; m < j; ++m)
             {
                 const double c = cost[at(i, m)] + cost[at(m, j)] + weight(i, m, j);
-                if (c < best)
+                // The first split is taken whatever its cost, so an overflowing (infinite or NaN)
+                // cost still leaves a valid triangulation.
+                if (m == i + 1 || c < best)
                 {
                     best = c;
                     split[at(i, j)] = static_cast<uint32_t>(m);

@@ -280,8 +280,9 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
     // The repairs a person would make (issue 36); a closed, manifold, one-part mesh skips them, so
     // such a mesh is exactly what it was before they existed.
     SurfaceClosing closing;
+    // Coordinates that overflow are refused below; no area or normal of theirs means anything.
     if ((topo.boundary_edges || topo.non_manifold_edges || topo.non_manifold_vertices || topo.components > 1) &&
-        !topo.non_orientable_components)
+        !topo.non_orientable_components && !huge)
     {
         const size_t faces_before = out.mesh.triangles.size();
         closing = close_surface(out.mesh, original, options.thicken_sheets);
@@ -310,7 +311,7 @@ PreparedSurface run(const PolygonSoup& soup, const PrepareOptions& options)
     // Parts that overlap are one solid: their inner walls go, the genus is the union's.
     OverlapMerge merged;
     if (topo.components > 1 && topo.boundary_edges == 0 && topo.non_manifold_edges == 0 &&
-        topo.non_manifold_vertices == 0 && topo.non_orientable_components == 0)
+        topo.non_manifold_vertices == 0 && topo.non_orientable_components == 0 && !huge)
         merged = merge_overlapping_parts(out.mesh);
 
     r.vertices = out.mesh.positions.size();

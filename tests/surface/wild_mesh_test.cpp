@@ -143,6 +143,24 @@ TEST(FillHoles, StraightRimsGetNoFlatTriangles)
     EXPECT_NEAR(filled.holes[0].area, 2.0, 1e-12);
 }
 
+TEST(FillHoles, OverflowingAreasStillGiveATriangulation)
+{
+    // Coordinates near 1e160: every area overflows to infinity, and the patch must still be the
+    // n - 2 triangles of a triangulation (not a loop over an unset split).
+    std::vector<Vec3> positions;
+    const size_t n = 9;
+    for (size_t i = 0; i < n; ++i)
+        positions.push_back(1e160 * Vec3(std::cos(0.7 * double(i)), std::sin(0.7 * double(i)), 0));
+    positions.push_back(Vec3(0, 0, -1e160));
+    std::vector<Triangle> triangles;
+    for (uint32_t i = 0; i < n; ++i)
+        triangles.push_back({i, static_cast<uint32_t>(n), static_cast<uint32_t>((i + 1) % n)});
+    std::vector<uint32_t> origin(positions.size());
+    const HoleFilling filled = fill_holes(positions, triangles, origin);
+    ASSERT_EQ(filled.holes.size(), 1u);
+    EXPECT_EQ(filled.holes[0].patch_faces, n - 2);
+}
+
 TEST(FillHoles, LongLoopsGetACentroidFanWithOneNewVertex)
 {
     // A cone open at its base: a loop longer than the exact triangulation takes.
