@@ -44,24 +44,7 @@ void keep_faces(TriangleMesh& mesh, std::vector<uint32_t>& origin, std::vector<u
         }
     mesh.triangles.resize(kept);
     source.resize(kept);
-    std::vector<uint32_t> index(mesh.positions.size(), none);
-    for (const Triangle& t : mesh.triangles)
-        for (const uint32_t v : t)
-            index[v] = 0;
-    size_t used = 0;
-    for (size_t v = 0; v < mesh.positions.size(); ++v)
-        if (index[v] != none)
-        {
-            index[v] = static_cast<uint32_t>(used);
-            mesh.positions[used] = mesh.positions[v];
-            origin[used] = origin[v];
-            ++used;
-        }
-    mesh.positions.resize(used);
-    origin.resize(used);
-    for (Triangle& t : mesh.triangles)
-        for (uint32_t& v : t)
-            v = index[v];
+    drop_unused_vertices(mesh, &origin);
 }
 
 std::string hole_sizes(std::vector<size_t> edges)

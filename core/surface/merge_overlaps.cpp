@@ -2,13 +2,14 @@
 
 #include <algorithm>
 #include <limits>
-#include <numeric>
 
 #include <Eigen/Geometry>
 
 #include "core/geom/closest_point.h"
 #include "core/geom/inside.h"
+#include "core/surface/edge_uses.h"
 #include "core/surface/face_parts.h"
+#include "core/surface/union_find.h"
 
 namespace zomeify {
 
@@ -62,37 +63,6 @@ Vec3 centroid(const TriangleMesh& m, uint32_t f)
     return (m.positions[t[0]] + m.positions[t[1]] + m.positions[t[2]]) / 3.0;
 }
 
-// Drops the vertices no face uses, keeping the others in order.
-void compact_vertices(TriangleMesh& mesh)
-{
-    constexpr uint32_t unused = std::numeric_limits<uint32_t>::max();
-    std::vector<uint32_t> index(mesh.positions.size(), unused);
-    for (const Triangle& t : mesh.triangles)
-        for (const uint32_t v : t)
-            index[v] = 0;
-    uint32_t n = 0;
-    for (size_t v = 0; v < mesh.positions.size(); ++v)
-        if (index[v] != unused)
-        {
-            index[v] = n;
-            mesh.positions[n++] = mesh.positions[v];
-        }
-    mesh.positions.resize(n);
-    for (Triangle& t : mesh.triangles)
-        for (uint32_t& v : t)
-            v = index[v];
-}
-
-uint32_t find(std::vector<uint32_t>& parent, uint32_t x)
-{
-    while (parent[x] != x)
-    {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
 } // namespace
 
 OverlapMerge merge_overlapping_parts(TriangleMesh& mesh)
@@ -120,8 +90,7 @@ OverlapMerge merge_overlapping_parts(TriangleMesh& mesh)
     // Faces of part a inside part b, for every pair that overlaps: some of a's faces inside b, some
     // not (a part wholly inside another is nested, a cavity or a solid in a hollow, and stays).
     std::vector<uint8_t> remove(mesh.triangles.size(), 0);
-    std::vector<uint32_t> group(count);
-    std::iota(group.begin(), group.end(), uint32_t{0});
+    UnionFind group(count);
     std::vector<uint8_t> joined(count, 0);
     for (uint32_t b = 0; b < count; ++b)
     {
@@ -150,9 +119,7 @@ OverlapMerge merge_overlapping_parts(TriangleMesh& mesh)
             for (const uint32_t f : within)
                 remove[f] = 1;
             joined[a] = joined[b] = 1;
-            const uint32_t ra = find(group, a), rb = find(group, b);
-            if (ra != rb)
-                group[std::max(ra, rb)] = std::min(ra, rb);
+            group.unite(a, b);
         }
     }
     for (const uint8_t j : joined)
@@ -165,32 +132,24 @@ OverlapMerge merge_overlapping_parts(TriangleMesh& mesh)
     for (uint32_t f = 0; f < mesh.triangles.size(); ++f)
         if (!remove[f])
         {
-            group_kept[find(group, part_of[f])] = 1;
+            group_kept[group.find(part_of[f])] = 1;
             mesh.triangles[kept++] = mesh.triangles[f];
         }
         else
             ++out.removed_faces;
     mesh.triangles.resize(kept);
-    compact_vertices(mesh);
+    drop_unused_vertices(mesh);
     for (const uint8_t g : group_kept)
         out.solids += g;
 
     // χ = V − E + F of what remains; each glued group is one closed surface of the union, so the
     // genus summed over them is (2 · groups − χ) / 2 (the crossing curves are circles, χ 0).
-    std::vector<uint64_t> edges;
-    edges.reserve(3 * mesh.triangles.size());
-    for (const Triangle& t : mesh.triangles)
-        for (int c = 0; c < 3; ++c)
-        {
-            const uint32_t p = t[c], q = t[(c + 1) % 3];
-            edges.push_back((uint64_t{std::min(p, q)} << 32) | std::max(p, q));
-        }
-    std::sort(edges.begin(), edges.end());
+    const std::vector<EdgeUse> edges = sorted_edge_uses(mesh.triangles, mesh.positions.size());
     size_t unique = 0;
     for (size_t i = 0; i < edges.size();)
     {
         size_t j = i + 1;
-        while (j < edges.size() && edges[j] == edges[i])
+        while (j < edges.size() && edges[j].key == edges[i].key)
             ++j;
         ++unique;
         out.seam_edges += j - i == 1;

@@ -2,11 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 #include <Eigen/Geometry>
 
 #include "core/surface/edge_uses.h"
+#include "core/surface/union_find.h"
 
 namespace zomeify {
 
@@ -14,46 +14,28 @@ namespace {
 
 constexpr uint32_t none = 0xFFFFFFFFu;
 
-uint32_t find(std::vector<uint32_t>& parent, uint32_t x)
-{
-    while (parent[x] != x)
-    {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
-    }
-    return x;
-}
-
-void unite(std::vector<uint32_t>& parent, uint32_t a, uint32_t b)
-{
-    a = find(parent, a);
-    b = find(parent, b);
-    if (a != b)
-        parent[std::max(a, b)] = std::min(a, b);
-}
-
 // Corners of two faces that share edge (u.face's corner u.corner → next) lie in one fan at each end.
-void join_across(std::vector<uint32_t>& fans, const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeUse& u,
+void join_across(UnionFind& fans, const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeUse& u,
                  const EdgeUse& w)
 {
     const uint32_t u_from = 3 * u.face + u.corner, u_to = 3 * u.face + (u.corner + 1) % 3;
     const uint32_t w_from = 3 * w.face + w.corner, w_to = 3 * w.face + (w.corner + 1) % 3;
     if (triangles[u.face][u.corner] == triangles[w.face][w.corner])
     {
-        unite(fans, u_from, w_from);
-        unite(fans, u_to, w_to);
+        fans.unite(u_from, w_from);
+        fans.unite(u_to, w_to);
     }
     else
     {
-        unite(fans, u_from, w_to);
-        unite(fans, u_to, w_from);
+        fans.unite(u_from, w_to);
+        fans.unite(u_to, w_from);
     }
 }
 
 // Pairs the k > 2 faces around edge a–b (a < b): sorted by angle about the edge, a face whose
 // normal points toward increasing angle (it runs b→a) closes a wedge of solid with the next face
 // if that one runs a→b. Returns the number of faces left unpaired.
-size_t pair_around_edge(std::vector<uint32_t>& fans, const std::vector<Vec3>& positions,
+size_t pair_around_edge(UnionFind& fans, const std::vector<Vec3>& positions,
                         const std::vector<std::array<uint32_t, 3>>& triangles, const EdgeUse* uses, size_t k)
 {
     const auto a = static_cast<uint32_t>(uses[0].key >> 32);
@@ -101,9 +83,8 @@ NonManifoldSplit split_non_manifold(std::vector<Vec3>& positions, std::vector<st
     const std::vector<EdgeUse> uses = sorted_edge_uses(triangles, positions.size());
 
     // Fans: corners joined across every edge that two faces share (as analyse_topology counts them).
-    std::vector<uint32_t> fans(3 * nf);
+    UnionFind fans(3 * nf);
     std::vector<uint8_t> on_split_edge(positions.size(), 0);
-    std::iota(fans.begin(), fans.end(), uint32_t{0});
     for (size_t i = 0; i < uses.size();)
     {
         size_t j = i;
@@ -128,7 +109,7 @@ NonManifoldSplit split_non_manifold(std::vector<Vec3>& positions, std::vector<st
     for (uint32_t c = 0; c < 3 * nf; ++c)
     {
         uint32_t& v = triangles[c / 3][c % 3];
-        const uint32_t root = find(fans, c);
+        const uint32_t root = fans.find(c);
         if (fan_vertex[root] == none)
         {
             if (!taken[v])

@@ -7,37 +7,13 @@
 
 #include "core/surface/edge_uses.h"
 #include "core/surface/nesting.h"
+#include "core/surface/union_find.h"
 
 namespace zomeify {
 
 namespace {
 
 constexpr uint32_t none = 0xFFFFFFFFu;
-
-class UnionFind
-{
-public:
-    explicit UnionFind(size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), uint32_t{0}); }
-    uint32_t find(uint32_t x)
-    {
-        while (parent_[x] != x)
-        {
-            parent_[x] = parent_[parent_[x]]; // path halving keeps the trees flat
-            x = parent_[x];
-        }
-        return x;
-    }
-    void unite(uint32_t a, uint32_t b)
-    {
-        a = find(a);
-        b = find(b);
-        if (a != b)
-            parent_[std::max(a, b)] = std::min(a, b);
-    }
-
-private:
-    std::vector<uint32_t> parent_;
-};
 
 // Which neighbour each face has across each of its three edges (manifold edges only), and whether
 // the two faces run along the shared edge in the same direction (inconsistent orientation).
