@@ -93,8 +93,6 @@ std::string guarded(F&& body)
 // typical_parts, the mix the CLI's kit estimate uses), planned as `zomeify parts` plans.
 nlohmann::json size_estimate(const InitialModel& z0, size_t balls)
 {
-    const auto& dims = z0.report.grid.dims;
-    const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
     const KitPlan plan = plan_kits(typical_parts(balls));
     size_t kits = 0;
     std::string text;
@@ -103,7 +101,7 @@ nlohmann::json size_estimate(const InitialModel& z0, size_t balls)
         kits += n;
         text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
     }
-    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0}, {"kits", kits}, {"kit_plan", text}};
+    return {{"size_mm", z0_built_size_cm(z0.model) * 10.0}, {"kits", kits}, {"kit_plan", text}};
 }
 
 std::string owned_text(const OwnedKits& owned)
@@ -231,9 +229,10 @@ std::string Session::estimate(int resolution)
             throw InvalidInputError("resolution must be between " + std::to_string(kMinResolution) + " and " +
                                     std::to_string(kMaxResolution) + " cells");
         auto [z0, out] = z0_estimate(s, resolution);
-        const GenusAdvice advice = z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution,
-                                                                  z0.report.topology.genus, 3.0)
-                                                   : GenusAdvice{};
+        const GenusAdvice advice =
+            z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution, z0.report.topology.genus,
+                                           run_z0_options(*s.projector, s.report.genus, resolution, 0.0))
+                            : GenusAdvice{};
         out["advice"] = advice.message;
         out["advice_resolution"] = advice.resolution;
         return out.dump();
@@ -317,14 +316,12 @@ std::string Session::auto_resolution()
 {
     return guarded([&] {
         const LoadedSurface& s = idle_surface();
-        AutoResolutionOptions options;
-        options.seconds = 3.0;
-        options.initial.surface_probe = probe_of(*s.projector);
-        const AutoResolution a = choose_resolution(s.mesh, s.report.genus, s.is_inside(), options);
-        nlohmann::json out = z0_estimate(s, a.resolution).second;
+        // The CLI's choice (z0_choice.h): the same grid, ball target and sentence as `zomeify run`.
+        const AutoResolution a = automatic_resolution(*s.projector, s.report.genus, s.is_inside());
+        auto [z0, out] = z0_estimate(s, a.resolution);
+        out.update(size_estimate(z0, a.target_nodes)); // the bill of the model the annealer aims at
+        out.update(nlohmann::json::parse(auto_resolution_json(a)));
         out["kept"] = a.genus_kept;
-        out["searched_to"] = a.searched_to;
-        out["message"] = a.message;
         out["seconds"] = a.seconds;
         return out.dump();
     });
@@ -353,7 +350,6 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
     {
         const LoadedSurface& s = *surface_;
         PipelineOptions po = pipeline_options(options);
-        po.advisor_seconds = 3.0;
         if (options.size_cm > 0.0)
             po.b1 = b1_for_size_cm(longest_side(s.mesh), options.size_cm); // as `run --size-cm`
         AnnealOptions& a = po.anneal;

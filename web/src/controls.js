@@ -78,6 +78,7 @@ export class Controls {
     this.lastEstimate = null; // of the resolution shown, for the run's genus check
     this.genusConsent = false; // the user chose to run at a resolution that loses the genus
     this.autoMessage = '';
+    this.autoTarget = 0; // the automatic choice's ball target, while the form holds it
     this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
 
     this.el('resolution').addEventListener('input', () => this.set({ resolution: this.el('resolution').value }));
@@ -119,8 +120,9 @@ export class Controls {
   }
 
   /**
-   * The resolution the core picks for the loaded mesh (the coarsest grid keeping its genus with
-   * enough balls); shown with its bill before anything runs. The user can still move it.
+   * The grid and ball target the core picks for the loaded mesh (core/voxel/auto_resolution.h: the
+   * default size, or the grid nearest it that keeps the shape's holes), the same as `zomeify run`;
+   * shown with its bill before anything runs. The user can still move either.
    */
   async chooseAutomatically(autoResolution) {
     if (this.pinned) {
@@ -128,7 +130,8 @@ export class Controls {
       return null;
     }
     const a = await autoResolution();
-    this.set({ resolution: a.resolution });
+    this.set({ resolution: a.resolution, target_nodes: a.target_nodes || 0 });
+    this.autoTarget = a.target_nodes || 0; // goes with this grid: moving the slider clears it
     this.genusConsent = !a.kept; // no grid keeps the genus: say so and go on (issue 26)
     this.autoMessage = `Resolution chosen for this shape: ${a.message}.`;
     this.showEstimate(a, a.resolution);
@@ -168,8 +171,12 @@ export class Controls {
   /** Applies any subset of RunOptions (plus `preset`). */
   set(o) {
     if (o.resolution !== undefined) {
-      // A new resolution: the automatic choice's note and any consent to lose the genus go.
+      // A new resolution: the automatic choice's note, its ball target and any consent to lose the genus go.
       this.autoMessage = '';
+      if (this.autoTarget && o.target_nodes === undefined && Number(this.el('target').value) === this.autoTarget) {
+        this.el('target').value = '';
+      }
+      this.autoTarget = 0;
     this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
       this.genusConsent = false;
       this.el('resolution').value = o.resolution;
@@ -183,7 +190,9 @@ export class Controls {
       this.el('size-cm').disabled = !on;
       if (on) {
         this.el('size-cm').value = o.size_cm;
-        this.autoMessage = ''; // the resolution chosen for the shape no longer applies
+        this.autoMessage = ''; // the resolution chosen for the shape no longer applies, nor its ball target
+        if (this.autoTarget && Number(this.el('target').value) === this.autoTarget) this.el('target').value = '';
+        this.autoTarget = 0;
       }
       this.el('resolution').disabled = on;
       this.scheduleEstimate();
