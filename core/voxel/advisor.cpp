@@ -83,8 +83,8 @@ std::string advice_message(int resolution, long long genus, const AdvisorResult&
     }
     else if (searched_to > searched_from)
     {
-        os << "; no resolution from " << searched_from << " to " << searched_to << " keeps the genus (genus " << want
-           << ")";
+        os << "; no grid from " << searched_from << " to " << searched_to << " cells keeps "
+           << (want == 0 ? "the shape without handles" : (want == 1 ? "it" : "them"));
     }
     return os.str();
 }

@@ -46,7 +46,8 @@ std::string explain(const AutoResolution& r)
         os << "no grid " << range_text(r.searched_from, r.searched_to) << " keeps " << holes(r.surface_genus)
            << (r.genus > r.surface_genus ? " (parts of the shape nearly touch and merge)"
                                          : " (parts of the shape are thinner than a strut can follow)")
-           << "; the model will have genus " << r.genus;
+           << "; the model will have "
+           << (r.genus == 0 ? "no hole" : std::to_string(r.genus) + (r.genus == 1 ? " hole" : " holes"));
         return os.str();
     }
     if (r.resolution == p)

@@ -58,7 +58,7 @@ TEST(VoxelAdvisor, Message)
     EXPECT_EQ(advice_message(8, 0, advice), "at 8 cells the handle of this shape closes up; 14 keeps it");
     advice.found = false;
     EXPECT_EQ(advice_message(8, 0, advice, 4, 32),
-              "at 8 cells the handle of this shape closes up; no resolution from 4 to 32 keeps the genus (genus 1)");
+              "at 8 cells the handle of this shape closes up; no grid from 4 to 32 cells keeps it");
 }
 
 TEST(VoxelAdvisor, HintIsTheNearestGridThatKeepsTheGenusAndTrue)
