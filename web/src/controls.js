@@ -125,13 +125,16 @@ export class Controls {
    * shown with its bill before anything runs. The user can still move either.
    */
   async chooseAutomatically(autoResolution) {
-    if (this.pinned) {
+    // A size the user asked for (or a script's resolution) stays: the estimate follows the new mesh.
+    if (this.pinned || this.sizeMode()) {
       this.scheduleEstimate();
       return null;
     }
+    const typed = this.el('target').value !== '' && Number(this.el('target').value) !== this.autoTarget;
     const a = await autoResolution();
-    this.set({ resolution: a.resolution, target_nodes: a.target_nodes || 0 });
-    this.autoTarget = a.target_nodes || 0; // goes with this grid: moving the slider clears it
+    const target = typed ? Number(this.el('target').value) : a.target_nodes || 0; // a typed target stays
+    this.set({ resolution: a.resolution, target_nodes: target });
+    this.autoTarget = typed ? 0 : target; // goes with this grid: moving the slider clears it
     this.genusConsent = !a.kept; // no grid keeps the genus: say so and go on (issue 26)
     this.autoMessage = `Resolution chosen for this shape: ${a.message}.`;
     this.showEstimate(a, a.resolution);

@@ -123,11 +123,24 @@ test('automatic choice: grid and ball target set with its message; a lost genus 
   clearTimeout(controls.estimateTimer);
   assert.equal(controls.runBlocker(), '');
   assert.match(el('estimate').textContent, /no grid from 6 to 32 cells/);
-  // A target the user typed stays when the slider moves.
+  // A target the user typed stays when the slider moves, and when the next mesh is chosen for.
   controls.set({ target_nodes: 700 });
   controls.set({ resolution: 9 });
   clearTimeout(controls.estimateTimer);
   assert.equal(controls.get().target_nodes, 700);
+  await controls.chooseAutomatically(async () => ({ resolution: 8, nodes: 210, kept: true, genus: 0, surface_genus: 0,
+    target_nodes: 378, message: '8 cells (210 balls, aiming at 378; about 62 cm): the default size', size_mm: 620 }));
+  clearTimeout(controls.estimateTimer);
+  assert.equal(controls.get().resolution, 8);
+  assert.equal(controls.get().target_nodes, 700);
+  // A built size the user asked for stays when a mesh is dropped: no automatic grid then.
+  controls.set({ size_cm: 50 });
+  let asked = false;
+  assert.equal(await controls.chooseAutomatically(async () => { asked = true; return { resolution: 11 }; }), null);
+  clearTimeout(controls.estimateTimer);
+  assert.equal(asked, false);
+  assert.equal(controls.get().size_cm, 50);
+  assert.equal(controls.get().resolution, 8);
 });
 
 test('the form read as RunOptions: defaults, and empty or bad fields fall back', () => {
