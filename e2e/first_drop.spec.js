@@ -1,8 +1,8 @@
 // The first minute on the page (issue 26): each shared mesh dropped through the real file input,
-// no setting touched but a shorter time budget, keeps its genus (every one of them has a grid up
-// to 64 cells that does) and ends with a valid model at the resolution the CLI would choose; the
-// page's form shows the core's defaults and bounds; a resolution known to lose the genus does not
-// run until the user agrees.
+// no setting touched but a shorter time budget, keeps its genus (every one of them has a grid from
+// 6 to 32 cells that does) and ends with a valid model at the grid the CLI would choose, with the
+// CLI's sentence (issue 37); the page's form shows the core's defaults and bounds; a resolution
+// known to lose the genus does not run until the user agrees.
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
@@ -16,11 +16,12 @@ const MESH_FILES = ['bunny.obj', 'torus.obj', 'sphere.obj', 'cube.obj', 'eight.o
   'rockerarm.obj', 'elk.obj', 'fertility.obj'];
 const SECONDS = 2; // the test's budget; the page's default is the standard preset
 
-/** The resolution `zomeify run` chooses for a mesh (its summary line says so). */
-function cliResolution(file) {
+/** The grid `zomeify run` chooses for a mesh and its sentence (the summary line says so). */
+function cliChoice(file) {
   fs.mkdirSync(OUT, { recursive: true });
   const out = cli(['run', path.join(MESHES, file), '--initial-only', '-o', path.join(OUT, 'auto-z0.zome.json')]);
-  return Number(out.match(/Resolution chosen automatically: (\d+) cells/)[1]);
+  const [, message, cells] = out.match(/Resolution chosen automatically: ((\d+) cells.*?)\.(?: Wrote|$)/);
+  return { resolution: Number(cells), message };
 }
 
 test('the form starts from the core\'s run settings: defaults, bounds, presets', async ({ page }) => {
@@ -68,8 +69,9 @@ test('each shared mesh dropped as is keeps its genus and ends with a valid model
     expect(progress.state, file).toBe('done');
     expect(s.valid, `${file}: ${s.validation}`).toBe(true);
     expect(progress.genus, `${file} keeps its genus`).toBe(progress.surface_genus);
-    expect(resolution, `${file}: the page and the CLI choose alike`).toBe(cliResolution(file));
-    await expect(page.locator('#estimate')).toContainText('Resolution chosen for this shape');
+    const choice = cliChoice(file);
+    expect(resolution, `${file}: the page and the CLI choose alike`).toBe(choice.resolution);
+    await expect(page.locator('#estimate')).toContainText(`Resolution chosen for this shape: ${choice.message}.`);
   }
   console.log(rows.join('\n'));
   await expectNoPageErrors(errors);

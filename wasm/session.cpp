@@ -96,23 +96,21 @@ std::string plan_text(const KitPlan& plan)
     return text;
 }
 
-// A bill for the finished model from Z0 across its cells: its size at real scale, and the kits.
-// The kits named ("kit_plan") are those that hold Z0's own parts: a default run never needed more
-// (kit_fit.h, measured on the shared meshes), so a buyer can trust them before the run;
-// "kit_plan_low" is what a default run typically needs (the measured median mix), the range's
-// other end.
-nlohmann::json size_estimate(const InitialModel& z0)
+// A bill for a finished model of `balls` balls from Z0 across its cells: its size at real scale,
+// and the kits. The kits named ("kit_plan") hold Z0's own parts scaled to `balls` (the annealer may
+// be asked for more balls than Z0 has): a default run never needed more (kit_fit.h, measured on the
+// shared meshes), so a buyer can trust them before the run; "kit_plan_low" is what a default run
+// typically needs (the measured median mix), the range's other end.
+nlohmann::json size_estimate(const InitialModel& z0, size_t balls)
 {
-    const auto& dims = z0.report.grid.dims;
-    const int longest = std::max({dims[0], dims[1], dims[2]}) - 2; // the grid pads one cell each side
-    const KitPlan high = plan_kits(parts_list(z0.model));
-    KitPlan low = plan_kits(annealed_parts(z0.model.nodes.size()));
+    const KitPlan high = plan_kits(parts_for_balls(parts_list(z0.model), balls));
+    KitPlan low = plan_kits(annealed_parts(balls));
     if (low.parts_bought > high.parts_bought)
         low = high; // a shape whose Z0 is already lean: the range is one plan
     size_t kits = 0;
     for (const auto& [kit, n] : high.kits)
         kits += n;
-    return {{"size_mm", std::max(1, longest) * kPhi * kMmPerB0},
+    return {{"size_mm", z0_built_size_cm(z0.model) * 10.0},
             {"kits", kits},
             {"kit_plan", plan_text(high)},
             {"kit_plan_parts", high.parts_bought},
@@ -225,7 +223,7 @@ std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface& s, int 
     out["kept"] = z0.report.valid && z0.report.topology.genus == s.report.genus;
     out["seconds"] = z0.report.seconds;
     out["z0_seconds"] = z0.report.seconds; // kept when `seconds` is the automatic search's time
-    out.update(size_estimate(z0));
+    out.update(size_estimate(z0, z0.model.nodes.size()));
     return {std::move(z0), std::move(out)};
 }
 
@@ -248,9 +246,10 @@ std::string Session::estimate(int resolution)
             throw InvalidInputError("resolution must be between " + std::to_string(kMinResolution) + " and " +
                                     std::to_string(kMaxResolution) + " cells");
         auto [z0, out] = z0_estimate(s, resolution);
-        const GenusAdvice advice = z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution,
-                                                                  z0.report.topology.genus, 3.0)
-                                                   : GenusAdvice{};
+        const GenusAdvice advice =
+            z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution, z0.report.topology.genus,
+                                           run_z0_options(*s.projector, s.report.genus, resolution, 0.0))
+                            : GenusAdvice{};
         out["advice"] = advice.message;
         out["advice_resolution"] = advice.resolution;
         return out.dump();
@@ -334,14 +333,12 @@ std::string Session::auto_resolution()
 {
     return guarded([&] {
         const LoadedSurface& s = idle_surface();
-        AutoResolutionOptions options;
-        options.seconds = 3.0;
-        options.initial.surface_probe = probe_of(*s.projector);
-        const AutoResolution a = choose_resolution(s.mesh, s.report.genus, s.is_inside(), options);
-        nlohmann::json out = z0_estimate(s, a.resolution).second;
+        // The CLI's choice (z0_choice.h): the same grid, ball target and sentence as `zomeify run`.
+        const AutoResolution a = automatic_resolution(*s.projector, s.report.genus, s.is_inside());
+        auto [z0, out] = z0_estimate(s, a.resolution);
+        out.update(size_estimate(z0, a.target_nodes)); // the bill of the model the annealer aims at
+        out.update(nlohmann::json::parse(auto_resolution_json(a)));
         out["kept"] = a.genus_kept;
-        out["searched_to"] = a.searched_to;
-        out["message"] = a.message;
         out["seconds"] = a.seconds;
         return out.dump();
     });
@@ -370,10 +367,8 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
     {
         const LoadedSurface& s = *surface_;
         PipelineOptions po = pipeline_options(options);
-        po.advisor_seconds = 3.0;
         // The page already holds the core's answer on holes for this resolution (estimate, or the
-        // automatic choice) and says it once; the run does not search again (up to 3 s before
-        // annealing, which a time preset does not count) for a second, possibly different, hint.
+        // automatic choice) and says it once; the run does not search again for a second hint.
         po.advise = false;
         if (options.size_cm > 0.0)
             po.b1 = b1_for_size_cm(longest_side(s.mesh), options.size_cm); // as `run --size-cm`

@@ -267,7 +267,11 @@ int cmd_run(const CommandArgs& argv)
     // Before annealing (Z0 is known): does a model of the target's size typically fit the kits?
     if (!owned.empty() && !options.initial_only)
         callbacks.initial = [&](const ZomeModel& z0) {
-            const size_t target = options.anneal.target_nodes ? options.anneal.target_nodes : z0.nodes.size();
+            // The automatic grid comes with its ball target (auto_resolution.h), a size set by the user with Z0's.
+            const bool automatic = options.b1 == 0.0 && options.resolution == kAutoResolution;
+            const size_t target = options.anneal.target_nodes ? options.anneal.target_nodes
+                                  : automatic                 ? target_balls(z0.nodes.size())
+                                                              : z0.nodes.size();
             std::cout << estimate_fit_line(target, have) << "\n" << std::flush;
         };
 

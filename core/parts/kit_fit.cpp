@@ -86,4 +86,23 @@ std::string fit_text(const PartCounts& need, const PartCounts& have)
     return "missing with your kits: " + part_counts_text(missing);
 }
 
+PartsList parts_for_balls(const PartsList& z0_parts, size_t balls)
+{
+    if (balls <= z0_parts.balls || z0_parts.balls == 0)
+        return z0_parts;
+    PartsList out = z0_parts;
+    const auto scaled = [&](size_t n) { return (n * balls + z0_parts.balls - 1) / z0_parts.balls; };
+    out.balls = balls;
+    out.strut_count = 0;
+    for (size_t& n : out.struts)
+    {
+        n = scaled(n);
+        out.strut_count += n;
+    }
+    const double f = static_cast<double>(balls) / static_cast<double>(z0_parts.balls);
+    out.total_length_b0 *= f;
+    out.total_length_mm *= f;
+    return out;
+}
+
 } // namespace zomeify

@@ -32,6 +32,12 @@ PartsList annealed_parts(size_t balls);
 //! length per ball, more than any finished model measured (at most 1.01 and 0.22). So the kits
 //! planned for Z0's parts are the ones a buyer can trust before the run.
 
+//! Z0's own parts scaled to a model of `balls` balls (rounded up; unchanged when `balls` is not more
+//! than Z0's): the safe end of a kit estimate when the annealer is asked for more balls than Z0 has,
+//! as the automatic choice does (auto_resolution.h), since the kits that hold Z0 hold more of every
+//! strut per ball than a finished model needs.
+PartsList parts_for_balls(const PartsList& z0_parts, size_t balls);
+
 //! Every count of `need` at most the same count of `have`.
 bool fits(const PartCounts& need, const PartCounts& have);
 

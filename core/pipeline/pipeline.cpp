@@ -62,12 +62,13 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
     InitialModelOptions z0_options = run_z0_options(projector, surface_genus, options.resolution, options.b1);
     if (options.b1 == 0.0 && options.resolution == kAutoResolution)
     {
-        AutoResolutionOptions automatic;
-        automatic.seconds = options.advisor_seconds;
-        automatic.initial.surface_probe = z0_options.surface_probe;
-        r.automatic = choose_resolution(surface, surface_genus, is_inside, automatic);
+        r.automatic = automatic_resolution(projector, surface_genus, is_inside);
         z0_options.resolution = r.automatic->resolution;
     }
+    // The automatic choice's ball target, unless the user set one (or a size: then Z0's count).
+    AnnealOptions anneal = options.anneal;
+    if (r.automatic && anneal.target_nodes == 0)
+        anneal.target_nodes = r.automatic->target_nodes;
     r.initial = build_initial_model(surface, is_inside, z0_options);
     r.initial_seconds = r.initial.report.seconds;
     const InitialModelReport& z0 = r.initial.report;
@@ -86,9 +87,7 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
         options.b1 > 0.0 ? static_cast<int>(std::lround((hi - lo).maxCoeff() / z0.grid.cell)) : z0_options.resolution;
     // The automatic choice already searched for the genus and says what it found.
     if (options.advise && !r.automatic && z0.topology.genus != surface_genus)
-        r.advice =
-            genus_advice(surface, surface_genus, is_inside, r.resolution, z0.topology.genus, options.advisor_seconds)
-                .message;
+        r.advice = genus_advice(surface, surface_genus, is_inside, r.resolution, z0.topology.genus, z0_options).message;
     if (callbacks.initial)
         callbacks.initial(r.initial.model);
 
@@ -99,7 +98,7 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
     }
     else
     {
-        Annealer annealer(std::move(z0_mesh), context, options.anneal);
+        Annealer annealer(std::move(z0_mesh), context, anneal);
         const Annealer::ProgressCallback progress = [&](const AnnealProgress& p) {
             if (callbacks.cancel && callbacks.cancel->load())
                 annealer.cancel();
@@ -111,8 +110,7 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
         // final model is the one the schedule converged to.
         r.model = r.anneal->stats.cancelled ? r.anneal->best_model : r.anneal->model;
     }
-    check_model(r, context, options.anneal.energy,
-                options.anneal.target_nodes ? options.anneal.target_nodes : r.initial.model.nodes.size(),
+    check_model(r, context, anneal.energy, anneal.target_nodes ? anneal.target_nodes : r.initial.model.nodes.size(),
                 options.fidelity_samples);
     r.seconds = clock.seconds();
     return r;

@@ -28,17 +28,15 @@ inline constexpr int kMaxResolution = 256;
 struct PipelineOptions
 {
     //! Cells along the longest side of the bounding box (used when b1 is 0); kAutoResolution:
-    //! choose_resolution() picks it (auto_resolution.h).
+    //! automatic_resolution() picks it (z0_choice.h), and the ball target too when anneal.target_nodes is 0.
     int resolution = kAutoResolution;
     //! Voxel edge b1 in mesh units; overrides resolution when > 0.
     double b1 = 0.0;
     //! Stop after Z0 (no annealing).
     bool initial_only = false;
-    //! When Z0 misses the genus of the surface, look for a resolution that keeps it (up to
-    //! advisor_seconds) and put the hint in PipelineResult::advice. The automatic resolution's
-    //! search for the genus has the same budget.
+    //! When Z0 misses the genus of the surface, look for a resolution that keeps it (genus_advice,
+    //! advisor.h) and put the hint in PipelineResult::advice.
     bool advise = true;
-    double advisor_seconds = 10.0;
     //! Points per side for the fidelity figures of the result (fidelity.h).
     int fidelity_samples = 50000;
     AnnealOptions anneal;

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/pipeline/pipeline.h"
+#include "core/pipeline/z0_choice.h"
 #include "core/zome/slots.h"
 
 namespace zomeify {
@@ -143,11 +144,10 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
     if (!r.advice.empty())
         j["advice"] = r.advice;
     if (r.automatic)
-        j["automatic_resolution"] = {{"resolution", r.automatic->resolution},
-                                     {"genus_kept", r.automatic->genus_kept},
-                                     {"searched_to", r.automatic->searched_to},
-                                     {"seconds", r.automatic->seconds},
-                                     {"message", r.automatic->message}};
+    {
+        j["automatic_resolution"] = nlohmann::json::parse(auto_resolution_json(*r.automatic));
+        j["automatic_resolution"]["seconds"] = r.automatic->seconds;
+    }
     return j.dump(indent);
 }
 

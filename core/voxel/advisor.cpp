@@ -7,6 +7,21 @@
 
 namespace zomeify {
 
+std::vector<int> nearest_first(int p, int lo, int hi)
+{
+    std::vector<int> order;
+    if (p >= lo && p <= hi)
+        order.push_back(p);
+    for (int d = 1; p + d <= hi || p - d >= lo; ++d)
+    {
+        if (p + d >= lo && p + d <= hi)
+            order.push_back(p + d);
+        if (p - d >= lo && p - d <= hi)
+            order.push_back(p - d);
+    }
+    return order;
+}
+
 AdvisorResult advise_resolution(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
                                 const AdvisorOptions& options)
 {
@@ -16,19 +31,20 @@ AdvisorResult advise_resolution(const TriangleMesh& surface, long long surface_g
     InitialModelOptions trial_options = options.initial;
     trial_options.b1 = 0.0;
     trial_options.target_genus = surface_genus;
-    for (int n = std::max(1, options.min_resolution); n <= options.max_resolution; ++n)
+    const int lo = std::max(1, options.min_resolution), hi = options.max_resolution;
+    for (int i = 0; i <= hi - lo; ++i)
     {
+        const int n = options.downward ? hi - i : lo + i;
         trial_options.resolution = n;
         const InitialModel z0 = build_initial_model(surface, inside, trial_options);
-        result.trials.push_back({n, z0.report.valid, z0.report.topology.genus, z0.report.seconds});
+        result.trials.push_back(
+            {n, z0.report.valid, z0.report.topology.genus, z0.report.seconds, z0.model.nodes.size()});
         if (z0.report.valid && z0.report.topology.genus == surface_genus)
         {
             result.found = true;
             result.resolution = n;
             break;
         }
-        if (clock.seconds() > options.seconds)
-            break;
     }
     result.seconds = clock.seconds();
     return result;
@@ -40,7 +56,8 @@ std::string handles(long long n) { return n == 1 ? "the handle" : "the " + std::
 
 } // namespace
 
-std::string advice_message(int resolution, long long genus, const AdvisorResult& advice)
+std::string advice_message(int resolution, long long genus, const AdvisorResult& advice, int searched_from,
+                           int searched_to)
 {
     std::ostringstream os;
     const long long want = advice.surface_genus;
@@ -64,34 +81,45 @@ std::string advice_message(int resolution, long long genus, const AdvisorResult&
         if (advice.resolution < resolution)
             os << " (a coarser grid happens to fit: genus is not monotone in the resolution)";
     }
-    else if (!advice.trials.empty())
+    else if (searched_to > searched_from)
     {
-        os << "; no resolution up to " << advice.trials.back().resolution << " keeps the genus (genus " << want << ")";
+        os << "; no grid from " << searched_from << " to " << searched_to << " cells keeps "
+           << (want == 0 ? "the shape without handles" : (want == 1 ? "it" : "them"));
     }
     return os.str();
 }
 
 GenusAdvice genus_advice(const TriangleMesh& surface, long long surface_genus, const InsidePredicate& inside,
-                         int resolution, long long genus, double seconds)
+                         int resolution, long long genus, const InitialModelOptions& initial)
 {
     if (genus == surface_genus)
         return {};
-    // The user wants about this much detail, so look first for the nearest finer grid that keeps
-    // the genus (the smallest one overall may be a useless blob), and only then below their choice.
-    AdvisorOptions advisor;
-    advisor.seconds = seconds;
-    advisor.min_resolution = resolution + 1;
-    advisor.max_resolution = std::max(kAdviceMaxResolution, 2 * resolution);
-    AdvisorResult found = advise_resolution(surface, surface_genus, inside, advisor);
-    if (!found.found && resolution > 4)
+    // The user wants about this much detail: the nearest grid that keeps the genus, not the smallest
+    // one overall (which may be a useless blob).
+    InitialModelOptions trial = initial;
+    trial.b1 = 0.0;
+    trial.target_genus = surface_genus;
+    AdvisorResult found;
+    found.surface_genus = surface_genus;
+    int from = resolution, to = resolution; // every grid in between was tried
+    for (int n : nearest_first(resolution, 4, std::max(kAdviceMaxResolution, resolution + 8)))
     {
-        advisor.min_resolution = 4;
-        advisor.max_resolution = resolution - 1;
-        const AdvisorResult below = advise_resolution(surface, surface_genus, inside, advisor);
-        if (below.found)
-            found = below;
+        if (n == resolution)
+            continue;
+        trial.resolution = n;
+        const InitialModel z0 = build_initial_model(surface, inside, trial);
+        found.trials.push_back(
+            {n, z0.report.valid, z0.report.topology.genus, z0.report.seconds, z0.model.nodes.size()});
+        from = std::min(from, n);
+        to = std::max(to, n);
+        if (z0.report.valid && z0.report.topology.genus == surface_genus)
+        {
+            found.found = true;
+            found.resolution = n;
+            break;
+        }
     }
-    return {advice_message(resolution, genus, found), found.found ? found.resolution : 0};
+    return {advice_message(resolution, genus, found, from, to), found.found ? found.resolution : 0};
 }
 
 } // namespace zomeify

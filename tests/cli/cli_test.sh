@@ -89,10 +89,10 @@ expect_error "obj units"        "OBJ units must be 'mm' or 'm'" convert "$tmp/a.
 expect_output "vzome vef 10"    '13 balls, 42 struts' parts "$here/../data/vef/vzome10_copy.vef"
 expect_output "run 2 threads"   'on 2 threads: .*genus 0' run "$mesh" --resolution 8 --proposals 20000 --threads 2 -o "$tmp/c.zome.json"
 # No --resolution: the automatic one (core/voxel/auto_resolution.h), which `--resolution auto` names.
-expect_output "run auto res"    'Z0 of bunny\.obj at 13 cells .*Resolution chosen automatically: 13 cells \(576 balls\): the coarsest grid with at least 500 balls' \
+expect_output "run auto res"    'Z0 of bunny\.obj at 8 cells .*Resolution chosen automatically: 8 cells \(210 balls, aiming at 378; about 62 cm\): the default size\.' \
   run "$mesh" --initial-only -o "$tmp/auto.zome.json" --stats "$tmp/auto.json"
 if grep -q '"automatic_resolution"' "$tmp/auto.json"; then ok; else bad "run stats lack automatic_resolution"; fi
-expect_output "run --res auto"  'at 13 cells .*chosen automatically' run "$mesh" --resolution auto --initial-only -o "$tmp/auto.zome.json"
+expect_output "run --res auto"  'at 8 cells .*chosen automatically' run "$mesh" --resolution auto --initial-only -o "$tmp/auto.zome.json"
 expect_error "run res 1"        'automatic \(0\) or from 2 to 256' run "$mesh" --resolution 1 -o "$tmp/x.zome.json"
 expect_error "run res 300"      '--resolution.*256'      run "$mesh" --resolution 300 -o "$tmp/x.zome.json"
 expect_error "run bad format"   'unknown model format'   run "$mesh" -o "$tmp/x.stl"

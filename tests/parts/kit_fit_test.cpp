@@ -67,6 +67,22 @@ TEST(KitFit, AnnealedPartsAreTheMeasuredMedianMix)
     EXPECT_EQ(annealed_parts(0).strut_count, 0u);
 }
 
+TEST(KitFit, PartsForMoreBallsScaleZ0sOwnParts)
+{
+    // The automatic choice asks the annealer for up to 1.8 x Z0's balls: the safe end of the kit
+    // estimate is Z0's parts scaled to that many, rounded up; never fewer than Z0's own.
+    PartsList z0;
+    z0.balls = 200;
+    z0.struts[static_cast<size_t>(StrutKind::B1)] = 401;
+    z0.strut_count = 401;
+    const PartsList more = parts_for_balls(z0, 360);
+    EXPECT_EQ(more.balls, 360u);
+    EXPECT_EQ(more.struts[static_cast<size_t>(StrutKind::B1)], 722u); // 401 x 1.8 = 721.8
+    EXPECT_EQ(more.strut_count, 722u);
+    EXPECT_EQ(parts_for_balls(z0, 150).balls, 200u);
+    EXPECT_EQ(parts_for_balls(z0, 150).struts[static_cast<size_t>(StrutKind::B1)], 401u);
+}
+
 TEST(KitFit, ShrunkBudgetFollowsTheScarcestPart)
 {
     const PartCounts have = creator3();

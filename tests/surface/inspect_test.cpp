@@ -123,6 +123,30 @@ TEST(InspectCli, JsonMatchesReadmeForAllSharedMeshes)
     }
 }
 
+TEST(InspectCli, AutomaticGridIsTheOneRunTakes)
+{
+    // issue 37: `inspect --json`, `inspect` and `run --initial-only` give one grid and one sentence.
+    ZOME_REQUIRE_SHARED();
+    for (const char* file : {"torus.obj", "fertility.obj"})
+    {
+        SCOPED_TRACE(file);
+        const std::string mesh = "'" + test::shared_path(std::string("data/meshes/") + file) + "'";
+        const CliResult inspect = run_cli("inspect " + mesh + " --json");
+        ASSERT_EQ(inspect.status, 0) << inspect.err;
+        const auto a = nlohmann::json::parse(inspect.out)["automatic_resolution"];
+        const std::string message = a["message"].get<std::string>();
+        EXPECT_EQ(message.rfind(std::to_string(a["resolution"].get<int>()) + " cells (", 0), 0u) << message;
+        EXPECT_TRUE(a["genus_kept"].get<bool>());
+        EXPECT_GT(a["target_nodes"].get<int>(), a["balls"].get<int>());
+        const CliResult table = run_cli("inspect " + mesh);
+        EXPECT_NE(table.out.find("automatic grid  " + message + "\n"), std::string::npos) << table.out;
+        const CliResult run =
+            run_cli("run " + mesh + " --initial-only -o '" + test::temp_path("auto_z0.zome.json") + "'");
+        ASSERT_EQ(run.status, 0) << run.err;
+        EXPECT_NE(run.out.find("Resolution chosen automatically: " + message + "."), std::string::npos) << run.out;
+    }
+}
+
 TEST(InspectCli, Table)
 {
     ZOME_REQUIRE_SHARED();

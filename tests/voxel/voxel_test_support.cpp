@@ -6,6 +6,7 @@
 #include <numeric>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 #include <unordered_set>
 
 #include "core/mesh/model_convert.h"
@@ -13,6 +14,7 @@
 #include "core/surface/prepare.h"
 #include "core/surface/read_mesh.h"
 #include "core/zome/slots.h"
+#include "tests/support/generated_shapes.h"
 #include "tests/support/paths.h"
 
 namespace zomeify::voxel_test {
@@ -39,6 +41,30 @@ const LoadedSurface& shared_surface(const std::string& name)
         s->projector = std::make_unique<SurfaceProjector>(s->mesh);
         s->inside = std::make_unique<InsideTest>(*s->projector);
         slot = std::move(s);
+    }
+    return *slot;
+}
+
+const LoadedSurface& generated_surface(const std::string& name)
+{
+    static std::mutex mutex;
+    static std::map<std::string, std::unique_ptr<LoadedSurface>> cache;
+    std::lock_guard lock(mutex);
+    auto& slot = cache[name];
+    if (!slot)
+    {
+        for (const test::GeneratedShape& g : test::generated_shapes())
+            if (g.name == name)
+            {
+                auto s = std::make_unique<LoadedSurface>();
+                s->mesh = g.mesh;
+                s->genus = g.genus;
+                s->projector = std::make_unique<SurfaceProjector>(s->mesh);
+                s->inside = std::make_unique<InsideTest>(*s->projector);
+                slot = std::move(s);
+            }
+        if (!slot)
+            throw std::out_of_range("no generated shape '" + name + "'");
     }
     return *slot;
 }

@@ -34,6 +34,10 @@ struct LoadedSurface
 //! Loads shared/data/meshes/<name>.obj once and keeps it for the rest of the process.
 const LoadedSurface& shared_surface(const std::string& name);
 
+//! A shape of tests/support/generated_shapes.h ("trefoil", "double_torus", "mug") with its
+//! genus and an inside test, built once for the rest of the process.
+const LoadedSurface& generated_surface(const std::string& name);
+
 //! An empty string if the model's faces form a closed, consistently oriented 2-manifold: every
 //! strut in exactly two faces with opposite directions, every face edge a strut, and the faces
 //! around every node forming one fan; otherwise the first problem found.

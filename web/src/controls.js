@@ -112,6 +112,7 @@ export class Controls {
     this.autoMessage = '';
     this.resultResolution = 0; // the model on screen is the loaded shape's, made at this resolution
     this.measuredSetup = 0; // seconds the last run on this shape took besides its time (App sets it)
+    this.autoTarget = 0; // the automatic choice's ball target, while the form holds it
     this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
 
     this.el('resolution').addEventListener('input', () => this.set({ resolution: this.el('resolution').value }));
@@ -153,18 +154,23 @@ export class Controls {
   }
 
   /**
-   * The resolution the core picks for the loaded mesh (the coarsest grid keeping its genus with
-   * enough balls); shown with its bill before anything runs. The user can still move it.
+   * The grid and ball target the core picks for the loaded mesh (core/voxel/auto_resolution.h: the
+   * default size, or the grid nearest it that keeps the shape's holes), the same as `zomeify run`;
+   * shown with its bill before anything runs. The user can still move either.
    */
   async chooseAutomatically(autoResolution) {
-    if (this.pinned) {
+    // A size the user asked for (or a script's resolution) stays: the estimate follows the new mesh.
+    if (this.pinned || this.sizeMode()) {
       this.scheduleEstimate();
       return null;
     }
     const serial = this.estimateSerial;
+    const typed = this.el('target').value !== '' && Number(this.el('target').value) !== this.autoTarget;
     const a = await autoResolution();
     if (serial !== this.estimateSerial) return null; // another shape (or resolution) came meanwhile
-    this.set({ resolution: a.resolution });
+    const target = typed ? Number(this.el('target').value) : a.target_nodes || 0; // a typed target stays
+    this.set({ resolution: a.resolution, target_nodes: target });
+    this.autoTarget = typed ? 0 : target; // goes with this grid: moving the slider clears it
     // No grid keeps the holes: the core's sentence says so and a run goes on (issue 26) without a
     // "run anyway" box, as there is nothing else to choose.
     this.noKeepingGrid = !a.kept;
@@ -233,8 +239,12 @@ export class Controls {
   /** Applies any subset of RunOptions (plus `preset`). */
   set(o) {
     if (o.resolution !== undefined) {
-      // A new resolution: the automatic choice's note and any consent to lose the genus go.
+      // A new resolution: the automatic choice's note, its ball target and any consent to lose the genus go.
       this.autoMessage = '';
+      if (this.autoTarget && o.target_nodes === undefined && Number(this.el('target').value) === this.autoTarget) {
+        this.el('target').value = '';
+      }
+      this.autoTarget = 0;
       this.pinned = false; // a script fixed the resolution: meshes loaded next keep it
       this.genusConsent = false;
       this.noKeepingGrid = false;
@@ -249,7 +259,9 @@ export class Controls {
       this.el('size-cm').disabled = !on;
       if (on) {
         this.el('size-cm').value = o.size_cm;
-        this.autoMessage = ''; // the resolution chosen for the shape no longer applies
+        this.autoMessage = ''; // the resolution chosen for the shape no longer applies, nor its ball target
+        if (this.autoTarget && Number(this.el('target').value) === this.autoTarget) this.el('target').value = '';
+        this.autoTarget = 0;
       }
       this.el('resolution').disabled = on;
       this.scheduleEstimate();

@@ -13,7 +13,7 @@ export const Request = Object.freeze({
   ESTIMATE_SIZE: 'estimateSize', // {sizeCm}                → estimate's fields + {size_cm, b1} (as run --size-cm)
   KIT_CHECK: 'kitCheck',  // {have, balls}                   → {fits, text, owned, missing{B0..R2, balls}, budget}
   FIT_KITS: 'fitKits',    // {have, maxResolution, shrink}   → {possible, resolution, target_nodes, size_cm, message, ...}
-  AUTO_RESOLUTION: 'autoResolution', // {}                   → estimate's fields + {resolution, message, searched_to}
+  AUTO_RESOLUTION: 'autoResolution', // {}                   → estimate's fields + the core's choice {resolution, target_nodes, message, ...}
   RUN: 'run',             // {options: RunOptions}           → final Progress (after the run ends)
   CANCEL: 'cancel',       // {}                              → {}   (the run's reply follows when it stops)
   SNAPSHOT: 'snapshot',   // {}                              → Snapshot

@@ -83,21 +83,27 @@ test("the core's run settings (sent at start-up) become the form's defaults and 
   clearTimeout(controls.estimateTimer);
 });
 
-test('automatic resolution: set on the slider with its message; a lost genus needs consent unless none keeps it', async () => {
+test('automatic choice: grid and ball target set with its message; a lost genus needs consent unless none keeps it', async () => {
   const { controls, el } = makeControls(async (r) => ({ nodes: 10 * r, struts: 20 * r, kept: r >= 14, genus: 0,
     surface_genus: 1, advice: r < 14 ? `at ${r} cells the handle of this shape closes up; 14 keeps it` : '',
     advice_resolution: r < 14 ? 14 : 0, size_mm: r * 75, kits: 1, kit_plan: '1 Creator 3' }));
   const a = await controls.chooseAutomatically(async () => ({ resolution: 14, nodes: 528, struts: 1056, kept: true,
-    genus: 1, surface_genus: 1, message: '14 cells (528 balls): the coarsest grid that keeps the hole through it',
-    size_mm: 1048, kits: 1, kit_plan: '1 Creator 3' }));
+    genus: 1, surface_genus: 1, target_nodes: 950, message: '14 cells (528 balls, aiming at 950; about 1.07 m): the ' +
+    'grid nearest the default 10 that keeps the hole through it (none from 6 to 13 cells does)',
+    size_mm: 1070, kits: 1, kit_plan: '1 Creator 3' }));
   clearTimeout(controls.estimateTimer);
   assert.equal(a.resolution, 14);
   assert.equal(el('resolution').value, '14');
-  assert.match(el('estimate').textContent, /^Resolution chosen for this shape: 14 cells \(528 balls\)/);
+  assert.equal(Number(el('target').value), 950); // the annealer is asked for more balls than Z0 holds
+  assert.equal(controls.get().target_nodes, 950);
+  assert.match(el('estimate').textContent, /^Resolution chosen for this shape: 14 cells \(528 balls, aiming at 950/);
+  assert.match(el('estimate').textContent, /The model: ≈ 950 balls/);
   assert.equal(controls.runBlocker(), '');
-  // The user moves the slider to 8: the estimate knows the handle closes; the run waits for consent.
+  // The user moves the slider to 8: the choice's target goes with it; the estimate knows the
+  // handle closes; the run waits for consent.
   controls.set({ resolution: 8 });
   clearTimeout(controls.estimateTimer);
+  assert.equal(controls.get().target_nodes, 0);
   await controls.updateEstimate();
   assert.equal(el('estimate').textContent.startsWith('Resolution chosen'), false);
   assert.match(controls.runBlocker(), /closes up; 14 keeps it/);
@@ -114,14 +120,32 @@ test('automatic resolution: set on the slider with its message; a lost genus nee
   assert.equal(el('resolution').value, '14');
   // No grid keeps the genus: the choice says so and the run goes on without asking.
   await controls.chooseAutomatically(async () => ({ resolution: 12, nodes: 600, kept: false, genus: 0,
-    surface_genus: 1, message: 'no grid up to 64 cells keeps the hole through it', size_mm: 900 }));
+    surface_genus: 1, message: 'no grid from 6 to 32 cells keeps the hole through it', size_mm: 900 }));
   clearTimeout(controls.estimateTimer);
   assert.equal(controls.runBlocker(), '');
   // Said once, as the warning; nothing to tick (issue 38: no "run anyway" box is ticked for the user).
-  assert.match(el('advice').text, /no grid up to 64 cells/);
-  assert.doesNotMatch(el('estimate').textContent, /no grid up to 64 cells/);
+  assert.match(el('advice').text, /no grid from 6 to 32 cells/);
+  assert.doesNotMatch(el('estimate').textContent, /no grid from 6 to 32 cells/);
   assert.equal(el('advice').children.some((c) => c.tagName === 'LABEL'), false);
   assert.equal(el('advice').hidden, false);
+  // A target the user typed stays when the slider moves, and when the next mesh is chosen for.
+  controls.set({ target_nodes: 700 });
+  controls.set({ resolution: 9 });
+  clearTimeout(controls.estimateTimer);
+  assert.equal(controls.get().target_nodes, 700);
+  await controls.chooseAutomatically(async () => ({ resolution: 8, nodes: 210, kept: true, genus: 0, surface_genus: 0,
+    target_nodes: 378, message: '8 cells (210 balls, aiming at 378; about 62 cm): the default size', size_mm: 620 }));
+  clearTimeout(controls.estimateTimer);
+  assert.equal(controls.get().resolution, 8);
+  assert.equal(controls.get().target_nodes, 700);
+  // A built size the user asked for stays when a mesh is dropped: no automatic grid then.
+  controls.set({ size_cm: 50 });
+  let asked = false;
+  assert.equal(await controls.chooseAutomatically(async () => { asked = true; return { resolution: 11 }; }), null);
+  clearTimeout(controls.estimateTimer);
+  assert.equal(asked, false);
+  assert.equal(controls.get().size_cm, 50);
+  assert.equal(controls.get().resolution, 8);
 });
 
 test('kits before a run: the core\'s range, its safe end last; one plan when both ends agree', () => {
