@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """The kit estimate before a run against the kit plan after it (issue 38), from the files
 kit_estimate.sh writes: for each mesh, Z0's parts and the finished model's parts (`zomeify parts
---json`). Prints per mesh the kits the page names before the run, at most the plan of Z0's own parts
-and typically the plan of the median annealed mix (core/parts/kit_fit.h annealed_parts), the plan
+--json`) and the run's ball target (its stats). Prints per mesh the kits the page names before the
+run, at most the plan of Z0's own parts scaled to the target (parts_for_balls) and typically the plan
+of the median annealed mix for the target (core/parts/kit_fit.h annealed_parts), the plan
 after the run, whether the named kits hold every part, and by how many parts they exceed the plan.
 --medians prints the median (and largest) struts per Z0 ball of each kind, which annealed_parts
 copies. A copy of the kit data and the planner keeps it standalone.
@@ -75,6 +76,24 @@ def counts_of(report):
     return counts
 
 
+def scaled(z0, balls):
+    """core/parts/kit_fit.cpp parts_for_balls: Z0's parts scaled up to the ball target, rounded up."""
+    if balls <= z0['balls']:
+        return dict(z0)
+    out = {k: -(-z0[k] * balls // z0['balls']) for k in KINDS}
+    out['balls'] = balls
+    return out
+
+
+def target_of(folder, name, z0):
+    """The ball target of the default run (the automatic choice's), else Z0's count."""
+    try:
+        stats = json.load(open(f'{folder}/{name}.json'))
+        return int(stats.get('automatic_resolution', {}).get('target_nodes') or z0['balls'])
+    except (OSError, ValueError):
+        return z0['balls']
+
+
 def annealed(balls):
     out = {k: math.ceil(ANNEALED[i] * balls - 1e-9) for i, k in enumerate(KINDS)}
     out['balls'] = balls
@@ -98,8 +117,9 @@ def main():
     print('|---|---|---|---|---|---|---|---|')
     for name in names:
         z0, final = data[name]
-        low, low_bought = plan(annealed(z0['balls']))
-        high, high_bought = plan(z0)
+        target = target_of(folder, name, z0)
+        low, low_bought = plan(annealed(target))
+        high, high_bought = plan(scaled(z0, target))
         if low_bought > high_bought:
             low = high
         after, after_bought = plan(final)
