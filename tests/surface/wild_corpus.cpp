@@ -119,14 +119,14 @@ std::vector<WildMesh> wild_corpus()
     }
     // A bust's open base: one latitude ring of 500 edges (past the exact triangulation's limit).
     {
-        PolygonSoup s = soup_of(test::make_uv_sphere(1.0, 60, 500));
+        PolygonSoup s = soup_of(test::make_uv_sphere(1.0, 16, 500));
         s = punched(s, Vec3(0, 0, -1), 0.45);
         corpus.push_back({"sphere, open base (500 edges)", s, 0, {"closed 1 hole (500 edges)"}, ""});
     }
     // A hole of about 300 edges on a fine sphere, triangulated exactly.
     {
-        PolygonSoup s = soup_of(test::make_uv_sphere(1.0, 200, 400));
-        s = punched(s, Vec3(1, 0, 0), 0.62);
+        PolygonSoup s = soup_of(test::make_uv_sphere(1.0, 96, 192));
+        s = punched(s, Vec3(1, 0, 0), 1.2);
         corpus.push_back({"sphere, one hole of about 300 edges", s, 0, {"closed 1 hole ("}, ""});
     }
     corpus.push_back({"two cubes touching at a corner",
