@@ -18,8 +18,15 @@ namespace {
 
 #ifdef ZOME_SANITIZED
 constexpr uint64_t kProposals = 3000;
+// Under a sanitizer every step is ~10x slower: the repairs of every mesh are checked by WildMeshes,
+// and the pipeline runs on one surface of each kind the repairs make (a seam, a fan, a dropped sheet).
+bool runs_here(const std::string& name)
+{
+    return name.starts_with("mug") || name.starts_with("sphere, open base") || name.starts_with("cube with a fin");
+}
 #else
 constexpr uint64_t kProposals = 20000;
+bool runs_here(const std::string&) { return true; }
 #endif
 
 std::string joined(const std::vector<std::string>& lines)
@@ -64,6 +71,8 @@ TEST(WildMeshPipeline, EveryAcceptedCorpusMeshGivesABuildableModelOfItsGenus)
             std::printf("| %s | refused: %s | | | |\n", w.name.c_str(), report.problem_summary().c_str());
             continue;
         }
+        if (!runs_here(w.name))
+            continue;
         const PreparedSurface p = prepare_surface(w.soup);
         const PipelineResult r = run_short(p);
         expect_buildable(p, r);
