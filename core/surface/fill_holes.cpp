@@ -61,17 +61,17 @@ void least_area_patch(const std::vector<Vec3>& positions, const std::vector<uint
             }
             cost[at(i, j)] = best + diagonal;
         }
-    std::vector<std::pair<size_t, size_t>> todo{{0, n - 1}};
-    while (!todo.empty())
+    std::vector<std::pair<size_t, size_t>> pending{{0, n - 1}}; // sub-polygons still to emit
+    while (!pending.empty())
     {
-        const auto [i, j] = todo.back();
-        todo.pop_back();
+        const auto [i, j] = pending.back();
+        pending.pop_back();
         if (j - i < 2)
             continue;
         const size_t m = split[at(i, j)];
         out.push_back({loop[i], loop[m], loop[j]});
-        todo.emplace_back(i, m);
-        todo.emplace_back(m, j);
+        pending.emplace_back(i, m);
+        pending.emplace_back(m, j);
     }
 }
 

@@ -35,16 +35,31 @@ std::vector<std::string> all_shared_meshes()
     return names;
 }
 
+// Median times of diagnose and prepare_surface on one soup, with the report and the result's size.
+struct Prepared
+{
+    SurfaceReport report;
+    size_t triangles = 0;
+    double diagnose_s = 0.0, prepare_s = 0.0;
+};
+
+Prepared time_prepare(const PolygonSoup& soup, int runs)
+{
+    Prepared p;
+    p.diagnose_s = bench::median_seconds(runs, [&] { p.report = diagnose(soup); });
+    p.prepare_s = bench::median_seconds(runs, [&] { p.triangles = prepare_surface(soup).mesh.triangles.size(); });
+    return p;
+}
+
 nlohmann::json bench_mesh(const std::string& name, int runs)
 {
     const std::string path = meshes_dir + name;
     PolygonSoup soup;
     const double read_s = bench::median_seconds(runs, [&] { soup = read_mesh_file(path); });
-    SurfaceReport report;
-    const double diagnose_s = bench::median_seconds(runs, [&] { report = diagnose(soup); });
-    size_t triangles = 0;
-    const double prepare_s =
-        bench::median_seconds(runs, [&] { triangles = prepare_surface(soup).mesh.triangles.size(); });
+    const Prepared p = time_prepare(soup, runs);
+    const SurfaceReport& report = p.report;
+    const size_t triangles = p.triangles;
+    const double diagnose_s = p.diagnose_s, prepare_s = p.prepare_s;
     return {
         {"mesh", name},
         {"file_bytes", std::filesystem::file_size(path)},
@@ -101,11 +116,10 @@ PolygonSoup holed_torus(int nu, int nv)
 nlohmann::json bench_holed_torus(int runs)
 {
     const PolygonSoup soup = holed_torus(1000, 500);
-    SurfaceReport report;
-    const double diagnose_s = bench::median_seconds(runs, [&] { report = diagnose(soup); });
-    size_t triangles = 0;
-    const double prepare_s =
-        bench::median_seconds(runs, [&] { triangles = prepare_surface(soup).mesh.triangles.size(); });
+    const Prepared p = time_prepare(soup, runs);
+    const SurfaceReport& report = p.report;
+    const size_t triangles = p.triangles;
+    const double diagnose_s = p.diagnose_s, prepare_s = p.prepare_s;
     return {
         {"mesh", "holed torus (generated)"},
         {"vertices", soup.positions.size()},
