@@ -172,6 +172,9 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
         s << "; " << z0.attempts << " grids tried";
     if (z0.carve_topology == CarveTopology::Free)
         s << "; carved freely (cells bridging a hole removed) to reach the surface's genus";
+    if (z0.centre_sampled)
+        s << "; cells taken where their centre is inside the surface (parts too close together for the "
+             "touched cells to keep apart) to reach the surface's genus";
     s << std::setprecision(3) << "; " << r.initial_seconds << " s.";
     if (r.automatic)
         s << " Resolution chosen automatically: " << r.automatic->message << ".";

@@ -139,7 +139,10 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
                     {"carved", z0.carve.removed - z0.carve.restored},
                     {"carve_kept_for_thin_parts", z0.carve.kept_for_coverage},
                     {"carve_restored_for_fold_overs", z0.carve.restored},
-                    {"carve_topology", z0.carve_topology == CarveTopology::Free ? "free" : "keep"},
+                    {"carve_topology", z0.centre_sampled                          ? "centre"
+                                       : z0.carve_topology == CarveTopology::Free ? "free"
+                                                                                  : "keep"},
+                    {"grids_missed", z0.notes},
                     {"seconds", r.initial_seconds}};
     if (!r.advice.empty())
         j["advice"] = r.advice;

@@ -10,23 +10,11 @@
 #include <cstddef>
 #include <functional>
 
-#include "core/geom/closest_point.h"
+#include "core/voxel/coverage.h"
 #include "core/voxel/voxel_grid.h"
 #include "core/voxel/voxelize.h"
 
 namespace zomeify {
-
-//! What carving needs to know of S at a point: the distance to S and S's unit outward normal at
-//! the closest point.
-struct SurfaceProbe
-{
-    double distance = 0.0;
-    Vec3 normal = Vec3::UnitZ();
-};
-using SurfaceProbeAt = std::function<SurfaceProbe(const Vec3&)>;
-
-//! The probe of S through its projector (which must outlive the probe).
-SurfaceProbeAt probe_of(const SurfaceProjector& projector);
 
 struct CarveReport
 {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <string>
 
 #include "core/base/stopwatch.h"
 
@@ -91,6 +92,7 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
         }
         rep.carve = {};
         rep.carve_topology = CarveTopology::Keep;
+        rep.centre_sampled = false;
         Extraction ex = extract_boundary(grid);
         out.model = std::move(ex.model);
         rep.topology = ex.topology;
@@ -120,6 +122,28 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
             }
             note << " (carved freely: genus " << fx.topology.genus << " in " << fx.topology.components
                  << (fx.topology.components == 1 ? " component)" : " components)");
+        }
+        if (options.centre_sampling && carve_inside && options.surface_probe)
+        {
+            VoxelGrid sampled = grid;
+            const CentreSampleReport cs = centre_sample(sampled, *carve_inside, options.surface_probe);
+            Extraction sx = extract_boundary(sampled);
+            if (cs.manifold && sx.topology.genus == options.target_genus && sx.topology.components == 1)
+            {
+                first_valid.reset();
+                rep.carve = {};
+                rep.carve_topology = CarveTopology::Keep;
+                rep.centre_sampled = true;
+                rep.voxels = sampled.occupied_count();
+                out.model = std::move(sx.model);
+                rep.topology = sx.topology;
+                break;
+            }
+            note << " (centre-sampled: "
+                 << (cs.manifold ? "genus " + std::to_string(sx.topology.genus) + " in " +
+                                       std::to_string(sx.topology.components) + " components"
+                                 : std::string("not manifold"))
+                 << ")";
         }
         rep.notes.push_back(note.str());
         if (!first_valid)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/voxel/carve.h"
+#include "core/voxel/centre_sampled.h"
 #include "core/voxel/extract.h"
 #include "core/voxel/repair.h"
 #include "core/voxel/voxel_grid.h"
@@ -41,6 +42,9 @@ struct InitialModelOptions
     //! the hole in the mother's arm no annealing removes (largest gap 2.83 b0 after 2·10^7 proposals);
     //! nudge 3 carved freely has the hole where S has it (1.64 b0).
     bool free_carving = true;
+    //! When a grid misses target_genus carved either way, try its centre-sampled cells (centre_sampled.h:
+    //! the gaps and holes of S wherever a cell fits through them) before nudging.
+    bool centre_sampling = true;
 };
 
 //! What happened, for the CLI's summary and --stats.
@@ -55,6 +59,7 @@ struct InitialModelReport
     RepairReport repair;                                //!< of that grid
     CarveReport carve;                                  //!< of that grid
     CarveTopology carve_topology = CarveTopology::Keep; //!< how that grid was carved
+    bool centre_sampled = false;                        //!< the cells are that grid's centre samples (centre_sampled.h)
     size_t voxels = 0;                                  //!< occupied cells after the cleanup
     BoundaryTopology topology;                          //!< of the extracted boundary
     double seconds = 0.0;                               //!< wall time of the whole build

@@ -210,6 +210,14 @@ bool is_manifold_star(VertexStar star)
     return table[star];
 }
 
+bool corners_manifold(const VoxelGrid& grid, int i, int j, int k)
+{
+    for (int c = 0; c < 8; ++c)
+        if (!is_manifold_star(vertex_star(grid, i + (c & 1), j + (c >> 1 & 1), k + (c >> 2 & 1))))
+            return false;
+    return true;
+}
+
 size_t count_nonmanifold_vertices(const VoxelGrid& grid)
 {
     const auto& d = grid.dims();

@@ -23,6 +23,10 @@ VertexStar vertex_star(const VoxelGrid& grid, int vx, int vy, int vz);
 //! cells each form one face-connected group (else a non-manifold vertex).
 bool is_manifold_star(VertexStar star);
 
+//! True if the stars of the 8 corners of cell (i, j, k) are manifold (after a flip of that cell only
+//! they change).
+bool corners_manifold(const VoxelGrid& grid, int i, int j, int k);
+
 //! Number of grid vertices whose star is not manifold.
 size_t count_nonmanifold_vertices(const VoxelGrid& grid);
 

@@ -6,10 +6,12 @@
 #include <cstdlib>
 #include <fstream>
 #include <map>
+#include <sstream>
 
 #include <gtest/gtest.h>
 
 #include "core/pipeline/z0_choice.h"
+#include "core/score/model_score.h"
 #include "core/voxel/auto_resolution.h"
 #include "tests/support/generated_shapes.h"
 #include "tests/support/paths.h"
@@ -112,5 +114,50 @@ TEST(GeneratedShapes, DISABLED_WriteObj)
         ASSERT_TRUE(out.good()) << path;
         std::cout << path << ": " << g.mesh.triangles.size() << " triangles, genus " << g.genus << ", longest side "
                   << g.longest_side << ", thinnest " << g.thinnest << ", narrowest gap " << g.narrowest_gap << "\n";
+    }
+}
+
+TEST(GeneratedShapes, DISABLED_Z0QualityWithAndWithoutCentreSampling)
+{
+    // ZOME_Z0_SHAPES="fertility trefoil" (default: fertility), ZOME_Z0_GRIDS="10 12" (default 6..32): per
+    // grid, Z0 without and with centre sampling: genus, balls, fold-overs, symmetric RMS and largest gap (b0).
+    const char* env_shapes = std::getenv("ZOME_Z0_SHAPES");
+    const char* env_grids = std::getenv("ZOME_Z0_GRIDS");
+    std::istringstream shapes_in(env_shapes ? env_shapes : "fertility");
+    std::vector<int> grids;
+    if (env_grids)
+    {
+        std::istringstream in(env_grids);
+        for (int r; in >> r;)
+            grids.push_back(r);
+    }
+    else
+        for (int r = 6; r <= 32; ++r)
+            grids.push_back(r);
+    for (std::string name; shapes_in >> name;)
+    {
+        const bool generated = name == "trefoil" || name == "double_torus" || name == "mug";
+        const LoadedSurface& s = generated ? generated_surface(name) : shared_surface(name);
+        for (int r : grids)
+        {
+            std::cout << name << " " << r << ":";
+            for (bool centre : {false, true})
+            {
+                InitialModelOptions o = run_z0_options(*s.projector, s.genus, r, 0.0);
+                o.centre_sampling = centre;
+                const InitialModel z0 = build_initial_model(s.mesh, s.predicate(), o);
+                std::cout << (centre ? "  | with:" : " without:") << " genus " << z0.report.topology.genus << " ("
+                          << (z0.report.centre_sampled                          ? "centre"
+                              : z0.report.carve_topology == CarveTopology::Free ? "free"
+                                                                                : "keep")
+                          << ", grid " << z0.report.attempt_used << ")";
+                if (!z0.report.valid)
+                    continue;
+                const ModelScore sc = score_model(z0.model, *s.projector);
+                std::cout << " " << sc.nodes << " balls, " << sc.fold_overs.count() << " fold-overs, rms "
+                          << sc.fidelity.rms_symmetric << ", gap " << sc.fidelity.hausdorff;
+            }
+            std::cout << "\n" << std::flush;
+        }
     }
 }

@@ -118,6 +118,7 @@ TEST(VoxelInitialModel, FertilityAt15CellsHasNoBarAcrossTheArm)
     keep.target_genus = s.genus;
     keep.surface_probe = probe_of(projector);
     keep.free_carving = false;
+    keep.centre_sampling = false; // free carving against neither: centre sampling is tested on its own
     InitialModelOptions free = keep;
     free.free_carving = true;
     const InitialModel a = build_initial_model(s.mesh, s.predicate(), keep);
