@@ -39,15 +39,18 @@ private:
 };
 
 // True if S holds the segment between two cell centres: no point along it stands further outside S
-// than 0.3 cell, or than the farther centre plus 0.15 cell (cells grown back for a part thinner than a
-// cell have their centres outside it). The cells then touch where S is continuous, not across a gap.
+// than 0.3 cell or, with ThinParts::Follow, than the farther centre plus 0.15 cell (cells grown back for
+// a part thinner than a cell have their centres outside it). The cells then touch where S is
+// continuous, not across a gap.
 bool joined_in_s(const VoxelGrid& grid, const CellIndex& a, const CellIndex& b, const InsidePredicate& inside,
-                 const SurfaceProbeAt& probe)
+                 const SurfaceProbeAt& probe, ThinParts thin)
 {
     const auto outside_by = [&](const Vec3& x) { return inside(x) ? 0.0 : probe(x).distance; };
     const Vec3 p = grid.cell_centre(a.i, a.j, a.k), q = grid.cell_centre(b.i, b.j, b.k);
     const double cell = grid.spec().cell;
-    const double allowed = std::max(0.3 * cell, std::max(outside_by(p), outside_by(q)) + 0.15 * cell);
+    const double allowed = thin == ThinParts::Follow
+                               ? std::max(0.3 * cell, std::max(outside_by(p), outside_by(q)) + 0.15 * cell)
+                               : 0.3 * cell;
     for (double t : {0.2, 0.35, 0.5, 0.65, 0.8})
         if (outside_by(p + t * (q - p)) >= allowed)
             return false;
@@ -88,7 +91,8 @@ bool connected_in_block(const VoxelGrid& grid, const CellIndex& a, const CellInd
 // continuous between them (a thin diagonal part), wrong across a gap of S (two strands of a knot). So
 // each such pair is joined (the deepest cell between them added) or separated (the shallower removed)
 // as S has it. Each cell flips at most once, so this ends; what is left goes to the cleanup.
-void resolve_contacts(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe, CentreDepth& depth)
+void resolve_contacts(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe, ThinParts thin,
+                      CentreDepth& depth)
 {
     const auto& d = grid.dims();
     std::vector<char> flipped(grid.cell_count(), 0);
@@ -118,7 +122,7 @@ void resolve_contacts(VoxelGrid& grid, const InsidePredicate& inside, const Surf
                                 const CellIndex b{i + dx, j + dy, k + dz};
                                 if (!grid.occupied(b.i, b.j, b.k) || connected_in_block(grid, a, b))
                                     continue;
-                                if (joined_in_s(grid, a, b, inside, probe))
+                                if (joined_in_s(grid, a, b, inside, probe, thin))
                                 {
                                     // The deepest empty cell of the block between them that can still flip.
                                     CellIndex best{0, 0, 0};
@@ -165,7 +169,8 @@ void resolve_contacts(VoxelGrid& grid, const InsidePredicate& inside, const Surf
 
 } // namespace
 
-CentreSampleReport centre_sample(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe)
+CentreSampleReport centre_sample(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe,
+                                 ThinParts thin)
 {
     CentreSampleReport report;
     const auto& d = grid.dims();
@@ -207,7 +212,7 @@ CentreSampleReport centre_sample(VoxelGrid& grid, const InsidePredicate& inside,
             report.grown += grow.size();
         }
         CentreDepth depth(grid, inside, probe);
-        resolve_contacts(grid, inside, probe, depth);
+        resolve_contacts(grid, inside, probe, thin, depth);
     }
     report.manifold = repair_manifold(grid).manifold;
     if (report.manifold && probe)

@@ -15,6 +15,17 @@
 
 namespace zomeify {
 
+//! How cells touching only along an edge or at a corner are judged when both lie outside S's thin parts.
+enum class ThinParts
+{
+    //! Joined only where the segment between their centres stays within 0.3 cell of S's inside.
+    Strict,
+    //! Also where it stays within 0.15 cell of the farther centre's distance outside S: cells grown back
+    //! along a part thinner than a cell stay joined (a mug's handle 1.2 cells thick at 10 cells), at the
+    //! price of joining some cells across a narrow gap.
+    Follow,
+};
+
 struct CentreSampleReport
 {
     size_t left_out = 0; //!< occupied cells whose centre is outside S, removed
@@ -26,6 +37,7 @@ struct CentreSampleReport
 //! Replaces the occupied cells of `grid` (the conservative cells) by those whose centre is inside S,
 //! then grows back, layer by layer, removed cells that alone hold a part of S, and repairs the result
 //! to a manifold boundary (repair.h). The caller judges the topology.
-CentreSampleReport centre_sample(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe);
+CentreSampleReport centre_sample(VoxelGrid& grid, const InsidePredicate& inside, const SurfaceProbeAt& probe,
+                                 ThinParts thin = ThinParts::Follow);
 
 } // namespace zomeify

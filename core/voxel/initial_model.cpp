@@ -125,25 +125,33 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
         }
         if (options.centre_sampling && carve_inside && options.surface_probe)
         {
-            VoxelGrid sampled = grid;
-            const CentreSampleReport cs = centre_sample(sampled, *carve_inside, options.surface_probe);
-            Extraction sx = extract_boundary(sampled);
-            if (cs.manifold && sx.topology.genus == options.target_genus && sx.topology.components == 1)
+            // Strict first: it keeps narrow gaps open; following thin parts keeps those joined.
+            bool taken = false;
+            for (ThinParts thin : {ThinParts::Strict, ThinParts::Follow})
             {
-                first_valid.reset();
-                rep.carve = {};
-                rep.carve_topology = CarveTopology::Keep;
-                rep.centre_sampled = true;
-                rep.voxels = sampled.occupied_count();
-                out.model = std::move(sx.model);
-                rep.topology = sx.topology;
-                break;
+                VoxelGrid sampled = grid;
+                const CentreSampleReport cs = centre_sample(sampled, *carve_inside, options.surface_probe, thin);
+                Extraction sx = extract_boundary(sampled);
+                if (cs.manifold && sx.topology.genus == options.target_genus && sx.topology.components == 1)
+                {
+                    first_valid.reset();
+                    rep.carve = {};
+                    rep.carve_topology = CarveTopology::Keep;
+                    rep.centre_sampled = true;
+                    rep.voxels = sampled.occupied_count();
+                    out.model = std::move(sx.model);
+                    rep.topology = sx.topology;
+                    taken = true;
+                    break;
+                }
+                note << " (centre-sampled" << (thin == ThinParts::Follow ? ", thin parts followed: " : ": ")
+                     << (cs.manifold ? "genus " + std::to_string(sx.topology.genus) + " in " +
+                                           std::to_string(sx.topology.components) + " components"
+                                     : std::string("not manifold"))
+                     << ")";
             }
-            note << " (centre-sampled: "
-                 << (cs.manifold ? "genus " + std::to_string(sx.topology.genus) + " in " +
-                                       std::to_string(sx.topology.components) + " components"
-                                 : std::string("not manifold"))
-                 << ")";
+            if (taken)
+                break;
         }
         rep.notes.push_back(note.str());
         if (!first_valid)

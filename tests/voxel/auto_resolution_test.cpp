@@ -104,9 +104,10 @@ TEST(AutoResolution, DoesNotDependOnTheMachinesSpeed)
 #ifdef ZOME_SANITIZED
     GTEST_SKIP() << "a determinism check, not a memory check: the same searches run in HolesFirstOnTheGeneratedShapes";
 #endif
-    // The knotted tube from 11 cells, where its strands merge (it keeps its genus from 6 to 10 only):
-    // the search walks 12, then 10. On a machine made 0.2 ms slower per inside query (seconds in all)
-    // the same grids are tried and the same choice made (the old search stopped after 5 s).
+    // The knotted tube from 11 cells, where its strands merge (no cell fits between them there; it keeps
+    // its genus on every other grid from 6 to 32): the search walks 11, then 12. On a machine made 0.2 ms slower per
+    // inside query (seconds in all) the same grids are tried and the same choice made (the old search stopped after 5
+    // s).
     const LoadedSurface& s = generated_surface("trefoil");
     AutoResolutionOptions options;
     options.preferred_resolution = 11;
