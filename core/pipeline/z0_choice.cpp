@@ -1,6 +1,10 @@
 #include "core/pipeline/z0_choice.h"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
+
+#include "core/voxel/facing_gaps.h"
 
 namespace zomeify {
 
@@ -20,6 +24,11 @@ AutoResolution automatic_resolution(const SurfaceProjector& projector, long long
 {
     AutoResolutionOptions options;
     options.initial = run_z0_options(projector, genus, 0, 0.0);
+    // Gaps up to a cell of the coarsest grid searched for them matter.
+    const auto box = bounding_box(projector.mesh());
+    const FacingGaps gaps =
+        facing_gaps(projector, (box[1] - box[0]).maxCoeff() / std::max(1, options.preferred_resolution - 1));
+    options.narrow_fraction = [&gaps](double width) { return gaps.fraction_narrower_than(width); };
     return choose_resolution(projector.mesh(), genus, inside, options);
 }
 
@@ -37,6 +46,8 @@ std::string auto_resolution_json(const AutoResolution& a)
                               {"surface_genus", a.surface_genus},
                               {"genus_kept", a.genus_kept},
                               {"preferred", a.preferred},
+                              {"gap_resolution", a.gap_resolution},
+                              {"narrow_at_preferred", a.narrow_at_preferred},
                               {"searched_from", a.searched_from},
                               {"searched_to", a.searched_to},
                               {"trials", trials},

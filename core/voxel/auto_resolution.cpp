@@ -41,6 +41,15 @@ std::string explain(const AutoResolution& r)
     os << r.resolution << " cells (" << r.balls << " balls, aiming at " << r.target_nodes << "; about "
        << size_text(r.size_cm) << "): ";
     const int p = r.preferred;
+    std::string gaps;
+    if (r.gap_resolution > p)
+    {
+        std::ostringstream g;
+        g << "parts of the shape face each other across gaps narrower than a cell of the default " << p << " cells ("
+          << std::lround(100.0 * r.narrow_at_preferred) << "% of its surface), so the grid is at least "
+          << r.gap_resolution << " cells, where most of them get a cell between them";
+        gaps = g.str();
+    }
     if (!r.genus_kept)
     {
         os << "no grid " << range_text(r.searched_from, r.searched_to) << " keeps " << holes(r.surface_genus)
@@ -48,6 +57,21 @@ std::string explain(const AutoResolution& r)
                                          : " (parts of the shape are thinner than a strut can follow)")
            << "; the model will have "
            << (r.genus == 0 ? "no hole" : std::to_string(r.genus) + (r.genus == 1 ? " hole" : " holes"));
+        return os.str();
+    }
+    if (!gaps.empty())
+    {
+        os << gaps;
+        if (r.resolution != r.gap_resolution)
+            os << "; " << r.resolution << " is the nearest that keeps " << holes(r.surface_genus) << " (none "
+               << (r.resolution > r.gap_resolution ? range_text(r.gap_resolution, r.resolution - 1)
+                                                   : range_text(r.resolution + 1, r.searched_to))
+               << " does)";
+        else if (r.surface_genus > 0)
+            os << ", and it keeps " << holes(r.surface_genus);
+        for (const ResolutionTrial& t : r.trials)
+            if (t.resolution == p && t.size_cm > 0.0)
+                os << " (the default would be about " << size_text(t.size_cm) << ")";
         return os.str();
     }
     if (r.resolution == p)
@@ -100,13 +124,38 @@ AutoResolution choose_resolution(const TriangleMesh& surface, long long surface_
     AutoResolution r;
     r.surface_genus = surface_genus;
     r.preferred = preferred;
-    r.searched_from = r.searched_to = preferred;
+    r.gap_resolution = preferred;
+    const auto box = bounding_box(surface);
+    const double longest = (box[1] - box[0]).maxCoeff();
+    if (options.narrow_fraction)
+    {
+        r.narrow_at_preferred = options.narrow_fraction(longest / preferred);
+        if (r.narrow_at_preferred > options.max_narrow_fraction)
+            for (int n = preferred + 1; n <= std::min(hi, options.max_gap_resolution); ++n)
+                if (options.narrow_fraction(longest / n) <= options.max_narrow_fraction)
+                {
+                    r.gap_resolution = n;
+                    break;
+                }
+    }
+    // From a finer start, finer grids first: a coarser one would merge the parts again.
+    std::vector<int> order;
+    if (r.gap_resolution > preferred)
+    {
+        for (int n = r.gap_resolution; n <= hi; ++n)
+            order.push_back(n);
+        for (int n = r.gap_resolution - 1; n >= lo; --n)
+            order.push_back(n);
+    }
+    else
+        order = nearest_first(preferred, lo, hi);
+    r.searched_from = r.searched_to = order.front();
     InitialModelOptions trial = options.initial;
     trial.b1 = 0.0;
     trial.target_genus = surface_genus;
     // Z0 at the grid taken: the first that keeps the genus, else the valid grid nearest the preferred one.
     std::optional<InitialModel> taken;
-    for (int n : nearest_first(preferred, lo, hi))
+    for (int n : order)
     {
         trial.resolution = n;
         InitialModel z0 = build_initial_model(surface, inside, trial);

@@ -11,6 +11,7 @@
 //! The annealer is then asked for `target_ratio` times Z0's balls, at most `max_target` (the paper's
 //! lever: its 62 cm bunny has 392 balls from a Z0 of about 220), so a small model still shows the shape.
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,15 @@ struct AutoResolutionOptions
     double target_ratio = 1.8;
     //! ...up to about the paper's bunny (4 Creator 3 kits and a Creator 1 or two), never below Z0's count.
     size_t max_target = 400;
+    //! The fraction of S's area facing another part of S across a gap narrower than a width (mesh units),
+    //! facing_gaps.h; unset, gaps are not looked at. Where more than `max_narrow_fraction` of S faces a
+    //! part closer than a cell of the preferred grid (a knot's strands: with the genus kept they still
+    //! merge into a lump), the search starts at the coarsest grid up to `max_gap_resolution` where no
+    //! more does, and goes finer first. When no grid that size reaches it (legs that all but touch), the
+    //! gaps are left alone and the search is the usual one.
+    std::function<double(double)> narrow_fraction;
+    double max_narrow_fraction = 0.05;
+    int max_gap_resolution = 12; //!< about 93 cm: the gaps may make a model that much larger, no more
     //! InitialModelOptions of every trial (resolution and b1 ignored; target_genus set to the
     //! surface's, so a grid counts when it or one of its nudges keeps the genus, as in a run).
     InitialModelOptions initial;
@@ -45,7 +55,11 @@ struct AutoResolution
     long long genus = 0;     //!< of Z0
     long long surface_genus = 0;
     bool genus_kept = false;
-    int preferred = 0; //!< the default grid the search started from
+    int preferred = 0; //!< the default grid
+    //! The grid the search started from: the preferred one, or a finer one where parts that face each
+    //! other across a gap narrower than the default's cell get a cell between them.
+    int gap_resolution = 0;
+    double narrow_at_preferred = 0.0; //!< the fraction of S's area facing a part closer than the default's cell
     //! Every grid from searched_from to searched_to was tried (and, but for the chosen one, missed the genus).
     int searched_from = 0;
     int searched_to = 0;

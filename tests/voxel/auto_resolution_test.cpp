@@ -72,7 +72,7 @@ TEST(AutoResolution, TheSameChoiceTwiceAndATrueSentenceOnEverySharedMesh)
         EXPECT_EQ(a.genus, s.genus);
         // Nearest the default first: every grid tried before the chosen one missed the genus.
         ASSERT_FALSE(a.trials.empty());
-        EXPECT_EQ(a.trials.front().resolution, a.preferred);
+        EXPECT_EQ(a.trials.front().resolution, a.gap_resolution); // the default, or finer where parts nearly touch
         EXPECT_EQ(a.trials.back().resolution, a.resolution);
         for (size_t i = 0; i + 1 < a.trials.size(); ++i)
             EXPECT_FALSE(a.trials[i].valid && a.trials[i].genus == s.genus);

@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <fstream>
+#include <iomanip>
 #include <map>
 #include <sstream>
 
@@ -13,6 +14,7 @@
 #include "core/pipeline/z0_choice.h"
 #include "core/score/model_score.h"
 #include "core/voxel/auto_resolution.h"
+#include "core/voxel/facing_gaps.h"
 #include "tests/support/generated_shapes.h"
 #include "tests/support/paths.h"
 #include "tests/voxel/voxel_test_support.h"
@@ -159,5 +161,26 @@ TEST(GeneratedShapes, DISABLED_Z0QualityWithAndWithoutCentreSampling)
             }
             std::cout << "\n" << std::flush;
         }
+    }
+}
+
+TEST(GeneratedShapes, DISABLED_FacingGapsAtEveryGrid)
+{
+    // The fraction of S's area facing another part closer than a cell, at grids 6..16.
+    std::vector<std::string> names = {"trefoil", "double_torus", "mug"};
+    for (const std::string& m : shared_mesh_names())
+        names.push_back(m);
+    for (const std::string& name : names)
+    {
+        const bool generated = name == "trefoil" || name == "double_torus" || name == "mug";
+        const LoadedSurface& s = generated ? generated_surface(name) : shared_surface(name);
+        const auto box = bounding_box(s.mesh);
+        const double longest = (box[1] - box[0]).maxCoeff();
+        const FacingGaps gaps = facing_gaps(*s.projector, longest / 6.0);
+        std::cout << name << ":";
+        for (int r = 6; r <= 16; ++r)
+            std::cout << " " << r << ":" << std::fixed << std::setprecision(3)
+                      << gaps.fraction_narrower_than(longest / r);
+        std::cout << "\n";
     }
 }
