@@ -25,15 +25,15 @@ test('a grid that loses the holes: one answer in the estimate, the status and th
   const { errors } = await openPage(page);
   await page.locator('#autorun').uncheck();
   // The grid is chosen (as a script may; the core's own choice keeps every shared mesh's holes).
-  await page.evaluate(() => window.zomeify.setOptions({ resolution: 6, seconds: 1 }));
+  await page.evaluate(() => window.zomeify.setOptions({ resolution: 5, seconds: 1 }));
   await pickFile(page, 'eight.obj', fs.readFileSync(path.join(MESHES, 'eight.obj'))); // 2 holes
   await expect(page.locator('#surface-info')).toContainText('2 holes through it');
   await expect(page.locator('#advice')).toBeVisible({ timeout: 30_000 });
   const e = await page.evaluate(() => window.zomeify.estimate());
   expect(e.kept).toBe(false);
-  expect(e.resolution).toBe(6);
+  expect(e.resolution).toBe(5);
   const keeps = e.advice_resolution;
-  expect(keeps, 'the core names a grid that keeps them').toBeGreaterThan(6);
+  expect(keeps, 'the core names a grid that keeps them').toBeGreaterThan(5);
   // The core's sentence once, as the warning, with its button; the estimate line has the bill only.
   await expect(page.locator('#advice')).toContainText(e.advice.replace(/\.$/, ''));
   await expect(page.locator('#use-advice')).toContainText(`Use ${keeps} cells`);
@@ -55,7 +55,7 @@ test('a grid that loses the holes: one answer in the estimate, the status and th
   // The same answer is still the one in the controls; no other resolution is named anywhere.
   await expect(page.locator('#use-advice')).toContainText(`Use ${keeps} cells`);
   const named = await page.evaluate(() => document.body.innerText.match(/\b(\d+) (?:cells|keeps)/g));
-  const others = named.map((m) => Number(m.match(/\d+/)[0])).filter((n) => n !== keeps && n !== 6);
+  const others = named.map((m) => Number(m.match(/\d+/)[0])).filter((n) => n !== keeps && n !== 5);
   expect(others, `resolutions named besides ${keeps} and the grid used`).toEqual([]);
   await expectNoPageErrors(errors);
 });
