@@ -83,25 +83,27 @@ struct EdgeContact
 
 BoundaryTopology topology_of(const VoxelGrid& g) { return extract_boundary(g).topology; }
 
+// The two blocks after centre sampling (which must leave them manifold).
+BoundaryTopology sampled(bool s_continuous)
+{
+    EdgeContact c(s_continuous);
+    EXPECT_GT(count_nonmanifold_vertices(c.grid), 0u) << "the blocks meet along an edge";
+    EXPECT_TRUE(centre_sample(c.grid, c.inside(), c.probe()).manifold);
+    return topology_of(c.grid);
+}
+
 } // namespace
 
 TEST(CentreSampled, CellsMeetingAcrossAGapOfSAreSeparated)
 {
-    EdgeContact c(false);
-    ASSERT_GT(count_nonmanifold_vertices(c.grid), 0u);
-    const CentreSampleReport r = centre_sample(c.grid, c.inside(), c.probe());
-    ASSERT_TRUE(r.manifold);
-    const BoundaryTopology t = topology_of(c.grid);
+    const BoundaryTopology t = sampled(false);
     EXPECT_EQ(t.components, 2) << "two blocks, as S has them";
     EXPECT_EQ(t.genus, 0);
 }
 
 TEST(CentreSampled, CellsMeetingWhereSIsContinuousAreJoined)
 {
-    EdgeContact c(true);
-    const CentreSampleReport r = centre_sample(c.grid, c.inside(), c.probe());
-    ASSERT_TRUE(r.manifold);
-    const BoundaryTopology t = topology_of(c.grid);
+    const BoundaryTopology t = sampled(true);
     EXPECT_EQ(t.components, 1) << "one body, as S has it";
     EXPECT_EQ(t.genus, 0);
 }
