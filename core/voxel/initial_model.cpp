@@ -104,24 +104,37 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
         }
         std::ostringstream note;
         note << describe(rep.grid, rep.layout) << ": genus " << rep.topology.genus << ", not " << options.target_genus;
+        // Another cell set of this grid: taken when it has the genus of S in one component, else noted.
+        const auto reaches_genus = [&](const VoxelGrid& cells, bool manifold, const char* how) {
+            Extraction x = extract_boundary(cells);
+            if (manifold && x.topology.genus == options.target_genus && x.topology.components == 1)
+            {
+                first_valid.reset();
+                rep.voxels = cells.occupied_count();
+                out.model = std::move(x.model);
+                rep.topology = x.topology;
+                return true;
+            }
+            note << " (" << how << ": ";
+            if (manifold)
+                note << "genus " << x.topology.genus << " in " << x.topology.components
+                     << (x.topology.components == 1 ? " component)" : " components)");
+            else
+                note << "not manifold)";
+            return false;
+        };
         if (options.free_carving && options.carve && carve_inside)
         {
             VoxelGrid freed = grid;
             const CarveReport carved =
                 carve_outside_cells(freed, *carve_inside, options.surface_probe, CarveTopology::Free);
-            Extraction fx = extract_boundary(freed);
-            if (fx.topology.genus == options.target_genus && fx.topology.components == 1)
+            if (reaches_genus(freed, true, "carved freely"))
             {
-                first_valid.reset();
+                rep.notes.push_back(note.str() + " (carved freely: taken)");
                 rep.carve = carved;
                 rep.carve_topology = CarveTopology::Free;
-                rep.voxels = freed.occupied_count();
-                out.model = std::move(fx.model);
-                rep.topology = fx.topology;
                 break;
             }
-            note << " (carved freely: genus " << fx.topology.genus << " in " << fx.topology.components
-                 << (fx.topology.components == 1 ? " component)" : " components)");
         }
         if (options.centre_sampling && carve_inside && options.surface_probe)
         {
@@ -130,25 +143,18 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
             for (ThinParts thin : {ThinParts::Strict, ThinParts::Follow})
             {
                 VoxelGrid sampled = grid;
-                const CentreSampleReport cs = centre_sample(sampled, *carve_inside, options.surface_probe, thin);
-                Extraction sx = extract_boundary(sampled);
-                if (cs.manifold && sx.topology.genus == options.target_genus && sx.topology.components == 1)
+                const bool manifold = centre_sample(sampled, *carve_inside, options.surface_probe, thin).manifold;
+                taken =
+                    reaches_genus(sampled, manifold,
+                                  thin == ThinParts::Follow ? "centre-sampled, thin parts followed" : "centre-sampled");
+                if (taken)
                 {
-                    first_valid.reset();
+                    rep.notes.push_back(note.str() + " (centre-sampled: taken)");
                     rep.carve = {};
                     rep.carve_topology = CarveTopology::Keep;
                     rep.centre_sampled = true;
-                    rep.voxels = sampled.occupied_count();
-                    out.model = std::move(sx.model);
-                    rep.topology = sx.topology;
-                    taken = true;
                     break;
                 }
-                note << " (centre-sampled" << (thin == ThinParts::Follow ? ", thin parts followed: " : ": ")
-                     << (cs.manifold ? "genus " + std::to_string(sx.topology.genus) + " in " +
-                                           std::to_string(sx.topology.components) + " components"
-                                     : std::string("not manifold"))
-                     << ")";
             }
             if (taken)
                 break;

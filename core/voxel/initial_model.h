@@ -63,7 +63,8 @@ struct InitialModelReport
     size_t voxels = 0;                                  //!< occupied cells after the cleanup
     BoundaryTopology topology;                          //!< of the extracted boundary
     double seconds = 0.0;                               //!< wall time of the whole build
-    std::vector<std::string> notes;                     //!< one line per grid that failed or missed the target genus
+    std::vector<std::string> notes; //!< one line per grid that failed or missed the target genus, with what each
+                                    //!< construction of it reached (the one taken last)
 };
 
 struct InitialModel

@@ -92,6 +92,12 @@ expect_output "run 2 threads"   'on 2 threads: .*genus 0' run "$mesh" --resoluti
 expect_output "run auto res"    'Z0 of bunny\.obj at 8 cells .*Resolution chosen automatically: 8 cells \(210 balls, aiming at 378; about 62 cm\): the default size\.' \
   run "$mesh" --initial-only -o "$tmp/auto.zome.json" --stats "$tmp/auto.json"
 if grep -q '"automatic_resolution"' "$tmp/auto.json"; then ok; else bad "run stats lack automatic_resolution"; fi
+# A grid whose conservative cells close fertility's holes (13 cells: genus 2) is centre-sampled; the
+# summary and the stats say so, with the construction tried before.
+expect_output "run centre-sampled" 'genus 4 against the surface.s 4 \(kept\).*cells taken where their centre is inside the surface' \
+  run "$shared/data/meshes/fertility.obj" --resolution 13 --initial-only -o "$tmp/cs.zome.json" --stats "$tmp/cs.json"
+if grep -q '"carve_topology": "centre"' "$tmp/cs.json"; then ok; else bad "run stats lack carve_topology centre"; fi
+if grep -Eq 'genus 2, not 4 \(carved freely: genus [0-9]+' "$tmp/cs.json"; then ok; else bad "run stats lack grids_missed"; fi
 expect_output "run --res auto"  'at 8 cells .*chosen automatically' run "$mesh" --resolution auto --initial-only -o "$tmp/auto.zome.json"
 expect_error "run res 1"        'automatic \(0\) or from 2 to 256' run "$mesh" --resolution 1 -o "$tmp/x.zome.json"
 expect_error "run res 300"      '--resolution.*256'      run "$mesh" --resolution 300 -o "$tmp/x.zome.json"
