@@ -41,6 +41,10 @@ TEST(FacingGaps, AConvexShapeFacesNothing)
 {
     const SurfaceProjector projector(test::make_icosphere(1.0, 3));
     EXPECT_EQ(facing_gaps(projector, 2.0, 1000).fraction_narrower_than(2.0), 0.0);
+    // No width to look across, or no samples: nothing measured, nothing narrow.
+    EXPECT_TRUE(facing_gaps(projector, 0.0).widths.empty());
+    EXPECT_TRUE(facing_gaps(projector, 2.0, 0).widths.empty());
+    EXPECT_EQ(facing_gaps(projector, 0.0).fraction_narrower_than(1.0), 0.0);
 }
 
 TEST(FacingGaps, AKnotWhoseStrandsNearlyTouchGetsAFinerGrid)
