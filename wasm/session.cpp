@@ -88,34 +88,22 @@ std::string guarded(F&& body)
     }
 }
 
-std::string plan_text(const KitPlan& plan)
-{
-    std::string text;
-    for (const auto& [kit, n] : plan.kits)
-        text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
-    return text;
-}
-
 // A bill for a finished model of `balls` balls from Z0 across its cells: its size at real scale,
-// and the kits. The kits named ("kit_plan") hold Z0's own parts scaled to `balls` (the annealer may
-// be asked for more balls than Z0 has): a default run never needed more (kit_fit.h, measured on the
-// shared meshes), so a buyer can trust them before the run; "kit_plan_low" is what a default run
-// typically needs (the measured median mix), the range's other end.
-nlohmann::json size_estimate(const InitialModel& z0, size_t balls)
+// and the kits (kit_estimate.h): "kit_plan" the kits named, which the run keeps within, and
+// "kit_plan_low" the plan of the quick pass's own mix ("typically").
+nlohmann::json size_estimate(const InitialModel& z0, const KitEstimate& kits)
 {
-    const KitPlan high = plan_kits(parts_for_balls(parts_list(z0.model), balls));
-    KitPlan low = plan_kits(annealed_parts(balls));
-    if (low.parts_bought > high.parts_bought)
-        low = high; // a shape whose Z0 is already lean: the range is one plan
-    size_t kits = 0;
-    for (const auto& [kit, n] : high.kits)
-        kits += n;
+    size_t count = 0;
+    for (const auto& [kit, n] : kits.plan.kits)
+        count += n;
+    const KitPlan low = plan_kits(kits.quick);
     return {{"size_mm", z0_built_size_cm(z0.model) * 10.0},
-            {"kits", kits},
-            {"kit_plan", plan_text(high)},
-            {"kit_plan_parts", high.parts_bought},
-            {"kit_plan_low", plan_text(low)},
-            {"kit_plan_low_parts", low.parts_bought}};
+            {"kits", count},
+            {"kit_plan", kits_text(kits.plan.kits)},
+            {"kit_plan_parts", kits.plan.parts_bought},
+            {"kit_plan_low", kits_text(low.kits)},
+            {"kit_plan_low_parts", low.parts_bought},
+            {"kit_seconds", kits.seconds}};
 }
 
 std::string owned_text(const OwnedKits& owned)
@@ -169,6 +157,7 @@ std::string Session::load_mesh(const std::string& bytes, const std::string& file
         loaded->projector = std::make_unique<SurfaceProjector>(prepared.mesh);
         loaded->inside = std::make_unique<InsideTest>(*loaded->projector);
         surface_ = std::move(loaded);
+        named_kits_.reset(); // they were for the last shape
         surface_name_ = file_name;
         nlohmann::json out;
         out["ok"] = true;
@@ -206,8 +195,10 @@ std::string Session::open_link(const std::string& link)
 namespace {
 
 // Z0 of the loaded surface at `resolution`, and what the page shows of it: counts, genus against
-// the surface's, and the finished model's size and kits.
-std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface& s, int resolution, double b1 = 0.0)
+// the surface's, and the finished model's size and the kits for a run towards `target` balls (0:
+// Z0's count), which are kept for the run that follows (Session::named_kits_).
+std::tuple<InitialModel, nlohmann::json, KitEstimate> z0_estimate(const LoadedSurface& s, int resolution,
+                                                                  double b1 = 0.0, size_t target = 0)
 {
     // Z0 as a run builds it (z0_choice.h), so the estimate's ball count is the run's starting model.
     InitialModel z0 =
@@ -223,8 +214,17 @@ std::pair<InitialModel, nlohmann::json> z0_estimate(const LoadedSurface& s, int 
     out["kept"] = z0.report.valid && z0.report.topology.genus == s.report.genus;
     out["seconds"] = z0.report.seconds;
     out["z0_seconds"] = z0.report.seconds; // kept when `seconds` is the automatic search's time
-    out.update(size_estimate(z0, z0.model.nodes.size()));
-    return {std::move(z0), std::move(out)};
+    KitEstimate kits = estimate_kits(*s.projector, z0, target);
+    out.update(size_estimate(z0, kits));
+    return {std::move(z0), std::move(out), std::move(kits)};
+}
+
+// A ball target from the page: 0 (none: Z0's count) or a whole number in the run's bounds.
+size_t target_of(double target)
+{
+    if (!(target >= 0.0 && target <= 1e6) || target != std::floor(target))
+        throw InvalidInputError("the ball target must be a whole number between 0 and 1,000,000");
+    return static_cast<size_t>(target);
 }
 
 } // namespace
@@ -238,14 +238,16 @@ const LoadedSurface& Session::idle_surface() const
     return *surface_;
 }
 
-std::string Session::estimate(int resolution)
+std::string Session::estimate(int resolution, double target)
 {
     return guarded([&] {
         const LoadedSurface& s = idle_surface();
         if (resolution < kMinResolution || resolution > kMaxResolution)
             throw InvalidInputError("resolution must be between " + std::to_string(kMinResolution) + " and " +
                                     std::to_string(kMaxResolution) + " cells");
-        auto [z0, out] = z0_estimate(s, resolution);
+        const size_t balls = target_of(target);
+        auto [z0, out, kits] = z0_estimate(s, resolution, 0.0, balls);
+        named_kits_ = NamedKits{resolution, 0.0, balls, std::move(kits)};
         const GenusAdvice advice =
             z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution, z0.report.topology.genus,
                                            run_z0_options(*s.projector, s.report.genus, resolution, 0.0))
@@ -256,14 +258,16 @@ std::string Session::estimate(int resolution)
     });
 }
 
-std::string Session::estimate_size(double size_cm)
+std::string Session::estimate_size(double size_cm, double target)
 {
     return guarded([&] {
         const LoadedSurface& s = idle_surface();
         const double longest = longest_side(s.mesh);
         // The CLI's formula (real_size.h), so the page's size gives the model `run --size-cm` gives.
         const double b1 = b1_for_size_cm(longest, size_cm);
-        auto [z0, out] = z0_estimate(s, static_cast<int>(std::lround(longest / b1)), b1);
+        const size_t balls = target_of(target);
+        auto [z0, out, kits] = z0_estimate(s, static_cast<int>(std::lround(longest / b1)), b1, balls);
+        named_kits_ = NamedKits{kAutoResolution, b1, balls, std::move(kits)};
         out["size_cm"] = size_cm;
         out["b1"] = b1;
         out["advice"] = "";
@@ -335,8 +339,9 @@ std::string Session::auto_resolution()
         const LoadedSurface& s = idle_surface();
         // The CLI's choice (z0_choice.h): the same grid, ball target and sentence as `zomeify run`.
         const AutoResolution a = automatic_resolution(*s.projector, s.report.genus, s.is_inside());
-        auto [z0, out] = z0_estimate(s, a.resolution);
-        out.update(size_estimate(z0, a.target_nodes)); // the bill of the model the annealer aims at
+        // The bill of the model the annealer aims at.
+        auto [z0, out, kits] = z0_estimate(s, a.resolution, 0.0, a.target_nodes);
+        named_kits_ = NamedKits{a.resolution, 0.0, a.target_nodes, std::move(kits)};
         out.update(nlohmann::json::parse(auto_resolution_json(a)));
         out["kept"] = a.genus_kept;
         out["seconds"] = a.seconds;
@@ -372,6 +377,16 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
         po.advise = false;
         if (options.size_cm > 0.0)
             po.b1 = b1_for_size_cm(longest_side(s.mesh), options.size_cm); // as `run --size-cm`
+        // The run keeps within the kits its estimate named: those of the estimate on screen when it
+        // was made for these settings, else the same quick pass again (deterministic: same kits).
+        po.keep_to_kit_estimate = true;
+        std::optional<KitEstimate> named;
+        if (named_kits_ && named_kits_->resolution == (po.b1 > 0.0 ? kAutoResolution : po.resolution) &&
+            named_kits_->b1 == po.b1 && named_kits_->target == po.anneal.target_nodes)
+        {
+            named = named_kits_->kits;
+            po.anneal.part_limits = named->limits;
+        }
         AnnealOptions& a = po.anneal;
         // 0 = automatic: every thread this build can start.
         a.threads = options.threads == 0 ? max_run_threads() : std::clamp(options.threads, 1, max_run_threads());
@@ -445,6 +460,8 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
         };
 
         PipelineResult result = run_pipeline(s.mesh, s.report.genus, po, callbacks);
+        if (named && !po.initial_only)
+            result.kit_estimate = std::move(named);
         // The same statistics the CLI writes (its .zome.json carries them too).
         result.model.stats_json = pipeline_stats_json(result, -1);
         const size_t nodes = result.model.nodes.size(), struts = result.model.struts.size();

@@ -15,6 +15,7 @@
 
 #include "core/geom/triangle_mesh.h"
 #include "core/io/model_io.h"
+#include "core/pipeline/kit_estimate.h"
 #include "core/surface/prepare.h"
 #include "core/zome/model.h"
 #include "wasm/run_progress.h"
@@ -42,10 +43,10 @@ public:
 
     //! Z0 at `resolution` cells without keeping it: {nodes, struts, genus, surface_genus, kept,
     //! advice, size_mm, kits}. Used by the page's live estimate.
-    std::string estimate(int resolution);
+    std::string estimate(int resolution, double target = 0);
     //! Z0 for a built longest side of `size_cm` (core/build/real_size.h, as `run --size-cm`):
     //! estimate()'s fields plus {size_cm, b1}; a clear error for a size out of range.
-    std::string estimate_size(double size_cm);
+    std::string estimate_size(double size_cm, double target = 0);
     //! Whether a typical model of `balls` balls fits the kits in `have` ("creator3, 2x basic", as
     //! `parts --have`): {fits, text, owned, missing{...}, budget} (budget: the balls that fit).
     std::string kit_check(const std::string& have, double balls) const;
@@ -106,6 +107,17 @@ private:
     ZomeModel model_;
     std::string model_source_ = "none";
     std::atomic<uint64_t> model_version_{0};
+
+    //! The kits the last estimate named, with the settings they were made for: a run with the
+    //! same settings keeps within them without a second quick pass.
+    struct NamedKits
+    {
+        int resolution = 0; //!< kAutoResolution with a size (b1 > 0)
+        double b1 = 0.0;
+        size_t target = 0; //!< 0: Z0's count
+        KitEstimate kits;
+    };
+    std::optional<NamedKits> named_kits_;
 
     std::unique_ptr<RunControl> run_;
     std::thread run_thread_;

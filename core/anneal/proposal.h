@@ -62,12 +62,13 @@ enum class Rejection : uint8_t
     FoldOver,     //!< (from the energy's simulate) a new face facing against the surface
     Uncovered,    //!< (at commit, after Metropolis) would leave a part of S with no node near (coverage_guard.h)
     // At commit, after Metropolis: parts that could not be built side by side (clearance_index.h).
-    BallsTooClose,   //!< two balls
-    BallOnStrut,     //!< a ball and a strut it does not hold
-    StrutsTooClose,  //!< two struts sharing no ball (a bow-tie quad among them)
-    StrutThroughFace //!< a strut through a face it shares no ball with
+    BallsTooClose,    //!< two balls
+    BallOnStrut,      //!< a ball and a strut it does not hold
+    StrutsTooClose,   //!< two struts sharing no ball (a bow-tie quad among them)
+    StrutThroughFace, //!< a strut through a face it shares no ball with
+    OverKits          //!< (at commit) a part count over the run's limits (part_tally.h)
 };
-inline constexpr int kRejectionKinds = 18;
+inline constexpr int kRejectionKinds = 19;
 std::string_view rejection_name(Rejection r) noexcept;
 
 struct Proposal

@@ -229,8 +229,8 @@ int cmd_run(const CommandArgs& argv)
                      "--size-cm",
                      "--have",
                      kObjUnitsOption},
-                    {"--initial-only", "--fit-kits", "--paper-energy", "--no-clearance", "--allow-fold-overs",
-                     "--thicken", kNoFacesFlag});
+                    {"--initial-only", "--fit-kits", "--within-estimate", "--paper-energy", "--no-clearance",
+                     "--allow-fold-overs", "--thicken", kNoFacesFlag});
     args.expect_positional(1, "one mesh file: zomeify run MESH -o OUT");
     const std::vector<std::string> outputs = args.values("-o");
     if (outputs.empty())
@@ -257,6 +257,13 @@ int cmd_run(const CommandArgs& argv)
     if (args.has("--size-cm"))
         options.b1 = b1_for_size_cm(longest_side(surface.mesh), args.number("--size-cm", 0.0, -1e300, 1e300));
     const PartCounts have = kit_contents(owned);
+    if (!owned.empty() && args.has("--within-estimate"))
+        throw InvalidInputError(
+            "give --have KITS or --within-estimate, not both (with your kits the run keeps within them)");
+    // The kits a person owns bound the run (part_tally.h); or the kits named before it, as the page.
+    if (!owned.empty())
+        options.anneal.part_limits = part_limits_of(owned);
+    options.keep_to_kit_estimate = args.has("--within-estimate");
 
     PipelineCallbacks callbacks;
     const bool show_progress = isatty(STDERR_FILENO) != 0;
@@ -347,6 +354,9 @@ int cmd_run(const CommandArgs& argv)
             throw IoError("cannot write " + *stats_path);
     }
     std::cout << summary(path, r, outputs) << "\n";
+    if (r.kit_estimate)
+        std::cout << "Kits named before annealing: " << kits_text(r.kit_estimate->plan.kits)
+                  << "; the model's kit plan: " << kits_text(plan_kits(parts_list(r.model)).kits) << ".\n";
     if (!owned.empty() && !options.initial_only)
     {
         const PartsList parts = parts_list(r.model);

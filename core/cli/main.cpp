@@ -36,8 +36,10 @@ const std::vector<Command>& commands()
          "          [--operator-weights I,A,S,R,F,M,N] [--coverage-radius B0S] [--initial-only] [--stats STATS.json]\n"
          "          [--obj-units mm|m] [--no-faces] [--thicken]   Z0, then annealing; --thicken: an open sheet is\n"
          "          given a thickness instead of being refused\n"
-         "          [--have KITS [--fit-kits]]   whether the model fits the kits you own; --fit-kits chooses the\n"
-         "          size and ball count so that it does (checked on the result, up to 3 tries)",
+         "          [--have KITS [--fit-kits]]   the run keeps within the kits you own; --fit-kits chooses the\n"
+         "          size and ball count so that it does (checked on the result, up to 3 tries)\n"
+         "          [--within-estimate]   name the kits before annealing (a short pass) and keep within them,\n"
+         "          as the page does",
          cmd_run},
     };
     return list;

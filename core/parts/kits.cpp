@@ -171,4 +171,12 @@ std::string kit_plan_text(const KitPlan& plan)
     return out.str();
 }
 
+std::string kits_text(const std::vector<std::pair<const Kit*, size_t>>& kits)
+{
+    std::string text;
+    for (const auto& [kit, n] : kits)
+        text += (text.empty() ? "" : " + ") + std::to_string(n) + " " + std::string(kit->name);
+    return text;
+}
+
 } // namespace zomeify

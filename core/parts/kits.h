@@ -49,6 +49,8 @@ PartCounts missing_parts(const PartsList& parts, const std::vector<std::pair<con
 
 //! Readable text and JSON of a plan (and of what is missing with owned kits, if given).
 std::string kit_plan_text(const KitPlan& plan);
+//! "4 Creator 3 + 1 Creator 1" ("" for none).
+std::string kits_text(const std::vector<std::pair<const Kit*, size_t>>& kits);
 std::string part_counts_text(const PartCounts& counts);
 
 } // namespace zomeify

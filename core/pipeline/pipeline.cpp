@@ -98,6 +98,11 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
     }
     else
     {
+        if (options.keep_to_kit_estimate && !anneal.part_limits)
+        {
+            r.kit_estimate = estimate_kits(projector, r.initial, anneal.target_nodes);
+            anneal.part_limits = r.kit_estimate->limits;
+        }
         Annealer annealer(std::move(z0_mesh), context, anneal);
         const Annealer::ProgressCallback progress = [&](const AnnealProgress& p) {
             if (callbacks.cancel && callbacks.cancel->load())

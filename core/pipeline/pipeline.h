@@ -12,6 +12,7 @@
 #include "core/anneal/clearance_index.h"
 #include "core/anneal/engine/annealer.h"
 #include "core/geom/triangle_mesh.h"
+#include "core/pipeline/kit_estimate.h"
 #include "core/score/fidelity.h"
 #include "core/score/fold_over_report.h"
 #include "core/voxel/auto_resolution.h"
@@ -39,6 +40,9 @@ struct PipelineOptions
     bool advise = true;
     //! Points per side for the fidelity figures of the result (fidelity.h).
     int fidelity_samples = 50000;
+    //! Name the kits before annealing (kit_estimate.h: a quick pass from Z0) and keep the run
+    //! within them, as the page does. Not when anneal.part_limits is set (the kits a person owns).
+    bool keep_to_kit_estimate = false;
     AnnealOptions anneal;
 };
 
@@ -61,6 +65,7 @@ struct PipelineResult
     std::string advice;                      //!< the resolution hint when Z0 missed the surface's genus
     std::optional<AutoResolution> automatic; //!< how the resolution was chosen, when automatic
     std::optional<AnnealResult> anneal;      //!< absent with initial_only
+    std::optional<KitEstimate> kit_estimate; //!< the kits named before annealing (keep_to_kit_estimate)
     //! The model to write: the best annealed model when the run was cancelled, the final one
     //! otherwise (Z0 with initial_only). Carries the transform and stats_json.
     ZomeModel model;

@@ -144,6 +144,11 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
                                                                                   : "keep"},
                     {"grids_missed", z0.notes},
                     {"seconds", r.initial_seconds}};
+    if (r.kit_estimate)
+        j["kit_estimate"] = {{"kits", kits_text(r.kit_estimate->plan.kits)},
+                             {"typically", kits_text(plan_kits(r.kit_estimate->quick).kits)},
+                             {"quick_pass_proposals", kQuickPassProposals},
+                             {"seconds", r.kit_estimate->seconds}};
     if (!r.advice.empty())
         j["advice"] = r.advice;
     if (r.automatic)

@@ -159,6 +159,14 @@ out=$("${cli[@]}" run "$shared/data/meshes/bunny.obj" --resolution 6 --have crea
 if grep -Eq '^Estimate: a model of about [0-9]+ balls typically (fits|does not fit) your kits' <<<"$out" &&
    grep -Eq '^Your kits \(1 x Creator 3\): the model \([0-9]+ balls, [0-9]+ struts\) (fits them|missing with your kits: .*)\.$' <<<"$out"; then ok
 else bad "run --have: $(tail -c 300 <<<"$out")"; fi
+# --within-estimate: the kits named before annealing, and the model's own plan needs none beyond them.
+out=$("${cli[@]}" run "$shared/data/meshes/torus.obj" --within-estimate --proposals 300000 --threads 1 -o "$tmp/w.zome.json" --stats "$tmp/w.json" 2>/dev/null)
+named=$(sed -n 's/^Kits named before annealing: \(.*\); the model.s kit plan: .*\.$/\1/p' <<<"$out")
+have=$(sed -E 's/([0-9]+) ([A-Za-z]+) ?([0-9]*)/\1x \2\3/g; s/ \+ /, /g' <<<"$named")
+if [ -n "$named" ] && grep -q '"kit_estimate"' "$tmp/w.json" &&
+   "${cli[@]}" parts "$tmp/w.zome.json" --have "$have" | grep -q '^missing with your kits: nothing$'; then ok
+else bad "run --within-estimate: named '$named' ($have): $(tail -c 300 <<<"$out")"; fi
+expect_error "within and have" 'give --have KITS or --within-estimate' run "$shared/data/meshes/bunny.obj" --have basic --within-estimate -o "$tmp/x.zome.json"
 # --fit-kits with one Creator 3: a plan, then the result's own parts fit the kit or the output says
 # it does not and names the nearest smaller size expected to.
 out=$("${cli[@]}" run "$shared/data/meshes/bunny.obj" --have creator3 --fit-kits --proposals 100000 --threads 1 -o "$tmp/f.zome.json" 2>/dev/null)

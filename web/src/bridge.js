@@ -138,9 +138,9 @@ export class CoreBridge {
     return result;
   }
 
-  estimate(resolution) { return this.request(Request.ESTIMATE, { resolution }); }
+  estimate(resolution, target = 0) { return this.request(Request.ESTIMATE, { resolution, target }); }
   /** Z0 for a built longest side of `sizeCm` (the core's real_size formula, as `run --size-cm`). */
-  estimateSize(sizeCm) { return this.request(Request.ESTIMATE_SIZE, { sizeCm }); }
+  estimateSize(sizeCm, target = 0) { return this.request(Request.ESTIMATE_SIZE, { sizeCm, target }); }
   /** Whether a typical model of `balls` balls fits the kits `have` ("creator3, 2x basic"). */
   kitCheck(have, balls) { return this.request(Request.KIT_CHECK, { have, balls }); }
   /** "Fit my kits": the resolution and target the core plans for `have`. */

@@ -34,14 +34,14 @@ export function sizeText(mm) {
 }
 
 /**
- * The kits a model of this estimate takes, as the core says before a run: at most `kit_plan` (the
- * kits that hold Z0's own parts: no default run measured needed more) and typically `kit_plan_low`
- * (the measured median mix); docs/page.md has the table.
+ * The kits a model of this estimate takes, as the core names them before a run (a short annealing
+ * pass, core/pipeline/kit_estimate.h): `kit_plan`, which the run keeps within, and `kit_plan_low`,
+ * the short pass's own mix, the range's other end; docs/page.md has the table.
  */
 export function kitsText(e) {
   if (!e.kit_plan) return '';
-  if (!e.kit_plan_low) return `about ${e.kit_plan}`;
-  return e.kit_plan_low === e.kit_plan ? e.kit_plan : `typically about ${e.kit_plan_low}, at most ${e.kit_plan}`;
+  const within = `${e.kit_plan} (the run keeps within them)`;
+  return !e.kit_plan_low || e.kit_plan_low === e.kit_plan ? within : `about ${e.kit_plan_low} to ${within}`;
 }
 
 /** What a model of this estimate costs: balls, struts, size and kits (2.2–2.9 struts per ball). */
@@ -120,6 +120,7 @@ export class Controls {
     this.el('size-mode')?.addEventListener('change', () => this.set({ size_cm: this.el('size-mode').checked
       ? Number(this.el('size-cm').value) || 50 : 0 }));
     this.el('size-cm')?.addEventListener('input', () => this.scheduleEstimate());
+    this.el('target')?.addEventListener('input', () => this.scheduleEstimate()); // the kits follow the ball target
     for (const { id } of KITS) this.el('kit-' + id)?.addEventListener('input', () => this.scheduleEstimate());
     this.el('fit-kits')?.addEventListener('click', () => this.fitMyKits());
     this.set(DEFAULTS);
@@ -407,6 +408,7 @@ export class Controls {
   async updateEstimate() {
     const serial = ++this.estimateSerial;
     const resolution = Number(this.el('resolution').value);
+    const target = Math.max(0, Math.round(Number(this.el('target').value) || 0)); // the kits are for the run's ball target
     let e;
     try {
       if (this.sizeMode()) {
@@ -416,12 +418,12 @@ export class Controls {
           this.el('estimate').textContent = error;
           return;
         }
-        e = await this.estimateSizeFn(cm);
+        e = await this.estimateSizeFn(cm, target);
         if (serial !== this.estimateSerial) return;
         this.showEstimate(e, e.resolution);
         return;
       }
-      e = await this.estimateFn(resolution);
+      e = await this.estimateFn(resolution, target);
     } catch (err) {
       // No mesh loaded: clear the line and the last mesh's warning with it. Busy with a run: the
       // line still describes the model being made.

@@ -25,7 +25,7 @@ function makeControls(answer = async (r) => ({ nodes: 10 * r, struts: 20 * r, ke
 test('estimate line: balls, 2.2–2.9 struts per ball, size at real scale and kits', () => {
   const e = { nodes: 192, struts: 384, size_mm: 898, kits: 2, kit_plan: '1 Creator 3 + 1 Basic' };
   assert.equal(estimateText(e, 192),
-    'The model: ≈ 192 balls, 422–557 struts, 90 cm across, kits: about 1 Creator 3 + 1 Basic');
+    'The model: ≈ 192 balls, 422–557 struts, 90 cm across, kits: 1 Creator 3 + 1 Basic (the run keeps within them)');
   assert.equal(billText({ nodes: 8124, size_mm: 3293 }), '≈ 8124 balls, 17873–23560 struts, 3.3 m across');
   assert.equal(sizeText(1234), '1.2 m');
   assert.equal(isLarge({ nodes: 8124, size_mm: 3293 }), true);
@@ -148,10 +148,10 @@ test('automatic choice: grid and ball target set with its message; a lost genus 
   assert.equal(controls.get().resolution, 8);
 });
 
-test('kits before a run: the core\'s range, its safe end last; one plan when both ends agree', () => {
+test('kits before a run: the core\'s range, the kits the run keeps within last; one plan when both ends agree', () => {
   assert.equal(kitsText({ kit_plan: '2 Creator 3', kit_plan_low: '1 Creator 3 + 1 Basic' }),
-    'typically about 1 Creator 3 + 1 Basic, at most 2 Creator 3');
-  assert.equal(kitsText({ kit_plan: '1 Creator 3', kit_plan_low: '1 Creator 3' }), '1 Creator 3');
+    'about 1 Creator 3 + 1 Basic to 2 Creator 3 (the run keeps within them)');
+  assert.equal(kitsText({ kit_plan: '1 Creator 3', kit_plan_low: '1 Creator 3' }), '1 Creator 3 (the run keeps within them)');
   assert.equal(kitsText({ kit_plan: '' }), '');
 });
 
@@ -169,12 +169,12 @@ test('a shown result of this shape and resolution is the one kit sentence; a new
     surface_genus: 1, size_mm: r * 75, kits: 1, kit_plan: '1 Creator 3' }));
   el('resolution').value = '12';
   await controls.updateEstimate();
-  assert.match(el('estimate').textContent, /kits: about 1 Creator 3/);
+  assert.match(el('estimate').textContent, /kits: 1 Creator 3 \(the run keeps within them\)/);
   controls.setResult(12);
   assert.equal(el('estimate').textContent, 'The model on screen was made at 12 cells; its parts and kit plan are under Parts.');
   el('resolution').value = '14'; // another resolution: another model, with its own estimate
   await controls.updateEstimate();
-  assert.match(el('estimate').textContent, /kits: about 1 Creator 3/);
+  assert.match(el('estimate').textContent, /kits: 1 Creator 3 \(the run keeps within them\)/);
   controls.shapeChanged();
   assert.equal(el('estimate').textContent, 'Choosing a resolution for this shape…');
   assert.equal(controls.lastEstimate, null);

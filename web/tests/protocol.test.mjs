@@ -38,11 +38,11 @@ test('a request is {id, type, ...fields}, with ids counting up and buffers in th
   const { bridge, sent } = scriptedBridge();
   const bytes = new ArrayBuffer(8);
   bridge.load('a.obj', bytes);
-  bridge.estimate(12);
+  bridge.estimate(12, 300);
   bridge.run({ seconds: 5 });
   assert.deepEqual(sent.map((s) => s.msg), [
     { id: 1, type: 'load', name: 'a.obj', bytes, thicken: false },
-    { id: 2, type: 'estimate', resolution: 12 },
+    { id: 2, type: 'estimate', resolution: 12, target: 300 },
     { id: 3, type: 'run', options: { seconds: 5 } },
   ]);
   assert.deepEqual(sent[0].transfer, [bytes]);

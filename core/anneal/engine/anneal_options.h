@@ -5,11 +5,20 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 
 #include "core/anneal/coverage_guard.h"
 #include "core/anneal/energy_options.h"
+#include "core/zome/slots.h"
 
 namespace zomeify {
+
+//! The most parts of each kind a run may use (the kits named before it, or a person's own kits).
+struct PartLimits
+{
+    std::array<uint32_t, kStrutKindCount> struts{}; //!< B0..R2
+    uint32_t balls = 0;
+};
 
 struct AnnealOptions
 {
@@ -57,6 +66,9 @@ struct AnnealOptions
     bool refuse_new_fold_overs = true;
     //! After the schedule, remove the fold-overs left (fold_repair.h); not after a cancel.
     bool repair_fold_overs = true;
+    //! Set: no commit raises a part count over its limit (part_tally.h: a starting model over a
+    //! limit may only come down to it). Unset: any mix.
+    std::optional<PartLimits> part_limits;
     //! Seconds between calls of the progress callback (and best-model snapshots).
     double progress_interval = 0.25;
 };

@@ -130,6 +130,8 @@ AnnealerState::AnnealerState(ZomeMesh start, const SurfaceContext& ctx, const An
 {
     uncovered_at_start = coverage.uncovered();
     clearance.reset(mesh);
+    if (options.part_limits)
+        parts.emplace(mesh);
     // A commit's new struts and faces take the slots its removed ones left, so a region's
     // elements stay together instead of being appended beside the other threads' (SurfaceMesh).
     mesh.set_slot_reuse(true);
@@ -214,6 +216,13 @@ Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDe
     if (options.clearance && check_clearance)
         if (const ClashKind clash = clearance.check(change); clash != ClashKind::None)
             return clash_rejection(clash);
+    PartTally::Counts part_delta{};
+    if (parts)
+    {
+        part_delta = PartTally::change_of(mesh, change);
+        if (!parts->allows(part_delta, *options.part_limits))
+            return Rejection::OverKits;
+    }
     // Last, because admitting updates the coverage counts as if the change were applied.
     if (!coverage.admit(mesh, change))
         return Rejection::Uncovered;
@@ -223,6 +232,8 @@ Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDe
     const std::span<const Face> added(added_faces.begin(), added_faces.size());
     clearance.learn(mesh, change, added);
     energy.commit(delta, added, surface_change);
+    if (parts)
+        parts->apply(part_delta);
     ++commits_applied;
     published_vertices.store(static_cast<uint32_t>(mesh.vertices_size()), std::memory_order_release);
     if (!has_room_for_any())

@@ -6,12 +6,14 @@
 #include <atomic>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 
 #include "core/anneal/clearance_index.h"
 #include "core/anneal/energy_state.h"
 #include "core/anneal/engine/anneal_options.h"
 #include "core/anneal/engine/anneal_stats.h"
+#include "core/anneal/engine/part_tally.h"
 #include "core/anneal/engine/pause_barrier.h"
 #include "core/anneal/engine/schedule.h"
 #include "core/anneal/engine/seed_slabs.h"
@@ -54,10 +56,11 @@ struct AnnealerState
     const SurfaceContext& context;
     AnnealOptions options; // resolved: threads ≥ 1, energy.target_nodes set
 
-    ZomeMesh mesh;            // written under the commit lock (or with all workers parked)
-    EnergyState energy;       // sums and E_surface's state: commit lock
-    CoverageGuard coverage;   // commit lock
-    ClearanceIndex clearance; // commit lock
+    ZomeMesh mesh;                  // written under the commit lock (or with all workers parked)
+    EnergyState energy;             // sums and E_surface's state: commit lock
+    CoverageGuard coverage;         // commit lock
+    ClearanceIndex clearance;       // commit lock
+    std::optional<PartTally> parts; // with options.part_limits: commit lock
     size_t uncovered_at_start = 0;
     EnergyTerms start_terms;
     CoolingSchedule schedule{0.0, 0.0};

@@ -63,6 +63,8 @@ std::string_view rejection_name(Rejection r) noexcept
         return "struts too close";
     case Rejection::StrutThroughFace:
         return "strut through a face";
+    case Rejection::OverKits:
+        return "over the kits";
     case Rejection::Overflow:
         return "overflow";
     }

@@ -158,8 +158,8 @@ const handlers = {
     postSnapshot();
     return result;
   },
-  [Request.ESTIMATE]: ({ resolution }) => parse(session.estimate(resolution)),
-  [Request.ESTIMATE_SIZE]: ({ sizeCm }) => parse(session.estimateSize(Number(sizeCm))),
+  [Request.ESTIMATE]: ({ resolution, target = 0 }) => parse(session.estimate(resolution, Number(target))),
+  [Request.ESTIMATE_SIZE]: ({ sizeCm, target = 0 }) => parse(session.estimateSize(Number(sizeCm), Number(target))),
   [Request.KIT_CHECK]: ({ have, balls }) => parse(session.kitCheck(String(have ?? ''), Number(balls) || 0)),
   [Request.FIT_KITS]: ({ have, maxResolution, shrink }) =>
     parse(session.fitKits(String(have ?? ''), Math.trunc(Number(maxResolution) || 0), Boolean(shrink))),
