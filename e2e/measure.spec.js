@@ -1,7 +1,8 @@
 // Measurements on the ten shared meshes, in the page with nothing touched (issue 38); about 8
 // minutes, so only with E2E_MEASURE=1 (`E2E_MEASURE=1 bash e2e/run.sh measure.spec.js`):
-// - the kits named before a run (the estimate's safe end) hold every part of the model a default
-//   run makes, and exceed its kit plan by at most one Creator 3 on at least 8 of 10;
+// - the kits named before a run (a short pass from Z0, which the run then keeps within) hold every
+//   part of the model a default run makes, and exceed its kit plan by at most one Creator 3 on at
+//   least 8 of 10;
 // - the quick preset ends within its time plus the set-up time the line under it promises.
 // Each prints its table (build/e2e-results/measure-*.md too).
 import fs from 'node:fs';
