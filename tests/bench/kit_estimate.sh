@@ -1,21 +1,24 @@
 #!/usr/bin/env bash
-# Measures the kit estimate against the kit plan (issue 38): for each shared mesh, with nothing set,
-# Z0 at the automatic resolution (`run --initial-only`, the model the page's estimate is made from)
-# and a default 30 s run; writes both parts reports (`zomeify parts --json`) and the runs' stats to
-# build/bench/kit_estimate/, then prints the table (kit_estimate.py). Native CLI; about 6 minutes.
-#   bash tests/bench/kit_estimate.sh [SECONDS]        (SECONDS: the run's budget, default 30)
+# Measures the kits named before a run against the kit plan after it (issue 38): for each shared
+# mesh, with nothing else set, `run --within-estimate` (as the page: a short pass from Z0 names the
+# kits, the run keeps within them) on one thread with a proposal budget (what the page's default
+# 30 s gives: about 6·10^6) and seeds 1 and 2; writes the runs' stats and parts reports
+# (`zomeify parts --json`) to build/bench/kit_estimate/, then prints the table (kit_estimate.py).
+# Native CLI; about 8 minutes.
+#   bash tests/bench/kit_estimate.sh [PROPOSALS]        (default 6000000)
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 cli=${ZOMEIFY_CLI:-build/native/core/cli/zomeify}
 meshes=${ZOMEIFY_SHARED:-../shared}/data/meshes
-seconds=${1:-30}
+proposals=${1:-6000000}
 out=build/bench/kit_estimate; mkdir -p "$out"
 for mesh in "$meshes"/*.obj; do
   name=$(basename "$mesh" .obj)
-  "$cli" run "$mesh" --initial-only -o "$out/$name.z0.zome.json" --stats "$out/$name.z0.json" >/dev/null
-  "$cli" run "$mesh" --seconds "$seconds" -o "$out/$name.zome.json" --stats "$out/$name.json" >/dev/null
-  "$cli" parts "$out/$name.z0.zome.json" --json > "$out/$name.z0.parts.json"
-  "$cli" parts "$out/$name.zome.json" --json > "$out/$name.parts.json"
+  for seed in 1 2; do
+    "$cli" run "$mesh" --within-estimate --threads 1 --proposals "$proposals" --seed "$seed" \
+      -o "$out/$name.$seed.zome.json" --stats "$out/$name.$seed.json" >/dev/null
+    "$cli" parts "$out/$name.$seed.zome.json" --json > "$out/$name.$seed.parts.json"
+  done
   echo "kit_estimate: $name done" >&2
 done
 python3 tests/bench/kit_estimate.py "$out"
