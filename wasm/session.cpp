@@ -377,12 +377,21 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
         po.advise = false;
         if (options.size_cm > 0.0)
             po.b1 = b1_for_size_cm(longest_side(s.mesh), options.size_cm); // as `run --size-cm`
-        // The run keeps within the kits its estimate named: those of the estimate on screen when it
-        // was made for these settings, else the same quick pass again (deterministic: same kits).
-        po.keep_to_kit_estimate = true;
+        if (options.continue_model)
+        {
+            // Improve, Fewer balls, More detail, Fix here: from the model on screen (it must have
+            // been made for this shape: run_pipeline refuses it otherwise), at its own size.
+            po.from = model();
+            if (options.radius > 0.0)
+                po.fix = FixSpot{Vec3(options.near[0], options.near[1], options.near[2]), options.radius};
+        }
+        // A run from Z0 keeps within the kits its estimate named: those of the estimate on screen
+        // when it was made for these settings, else the same quick pass again (same kits).
+        po.keep_to_kit_estimate = !options.continue_model;
         std::optional<KitEstimate> named;
-        if (named_kits_ && named_kits_->resolution == (po.b1 > 0.0 ? kAutoResolution : po.resolution) &&
-            named_kits_->b1 == po.b1 && named_kits_->target == po.anneal.target_nodes)
+        if (po.keep_to_kit_estimate && named_kits_ &&
+            named_kits_->resolution == (po.b1 > 0.0 ? kAutoResolution : po.resolution) && named_kits_->b1 == po.b1 &&
+            named_kits_->target == po.anneal.target_nodes)
         {
             named = named_kits_->kits;
             po.anneal.part_limits = named->limits;

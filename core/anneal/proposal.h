@@ -66,9 +66,10 @@ enum class Rejection : uint8_t
     BallOnStrut,      //!< a ball and a strut it does not hold
     StrutsTooClose,   //!< two struts sharing no ball (a bow-tie quad among them)
     StrutThroughFace, //!< a strut through a face it shares no ball with
-    OverKits          //!< (at commit) a part count over the run's limits (part_tally.h)
+    OverKits,         //!< (at commit) a part count over the run's limits (part_tally.h)
+    OutsideRegion     //!< (at commit) a change outside the region the run may change (change_region.h)
 };
-inline constexpr int kRejectionKinds = 19;
+inline constexpr int kRejectionKinds = 20;
 std::string_view rejection_name(Rejection r) noexcept;
 
 struct Proposal

@@ -16,17 +16,21 @@
 #include "core/build/real_size.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
+#include "core/cli/model_input.h"
 #include "core/cli/output_options.h"
+#include "core/cli/point_arg.h"
 #include "core/cli/run_kits.h"
 #include "core/geom/closest_point.h"
 #include "core/geom/inside.h"
 #include "core/io/model_io.h"
+#include "core/io/share_link.h"
 #include "core/parts/parts_list.h"
 #include "core/pipeline/kit_fit_plan.h"
 #include "core/pipeline/pipeline.h"
 #include "core/pipeline/run_settings.h"
 #include "core/surface/prepare.h"
 #include "core/surface/read_mesh.h"
+#include "core/zome/real_sizes.h"
 
 namespace zomeify::cli {
 
@@ -152,18 +156,32 @@ void check_output_name(const std::string& out)
     throw InvalidInputError("'" + out + "': unknown model format (expected .zome.json, .vef, .glb, .obj or .csv)");
 }
 
-std::string summary(const std::string& path, const PipelineResult& r, const std::vector<std::string>& outputs)
+// --from MODEL (a model file, or a share link), --near X,Y,Z --radius R.
+void continue_options(const Args& args, PipelineOptions& options)
+{
+    const std::optional<std::string> from = args.value("--from");
+    if (!from)
+    {
+        if (args.has("--near") || args.has("--radius"))
+            throw InvalidInputError("--near and --radius fix one spot of a model: give it with --from MODEL");
+        return;
+    }
+    if (args.has("--initial-only") || args.has("--resolution") || args.has("--b1") || args.has("--size-cm") ||
+        args.has("--fit-kits"))
+        throw InvalidInputError("--from continues a model at its own size: drop --initial-only, --resolution, --b1, "
+                                "--size-cm and --fit-kits");
+    const bool link = from->find("m=") != std::string::npos && !std::ifstream(*from).good();
+    options.from = link ? decode_share_link(*from) : read_model_warning_of_clashes(*from);
+    if (args.has("--near") != args.has("--radius"))
+        throw InvalidInputError("give --near X,Y,Z and --radius R together");
+    if (args.has("--near"))
+        options.fix = FixSpot{point_of(*args.value("--near"), "--near"), args.number("--radius", 0.0, 1e-9, 1e300)};
+}
+
+// What the summary says of Z0 beyond its counts: cleanup, carving, grids tried, time.
+void z0_details(std::ostringstream& s, const PipelineResult& r)
 {
     const InitialModelReport& z0 = r.initial.report;
-    const ZomeModel& m0 = r.initial.model;
-    std::ostringstream s;
-    s << std::setprecision(4);
-    s << "Z0 of " << file_name(path) << " at " << r.resolution << " cells along the longest side (b1 = " << z0.grid.cell
-      << " mesh units, grid " << z0.grid.dims[0] << "x" << z0.grid.dims[1] << "x" << z0.grid.dims[2]
-      << "): " << m0.nodes.size() << " balls, " << m0.struts.size() << " B1 struts, " << m0.faces.size()
-      << " quads from " << z0.voxels << " voxels; genus " << z0.topology.genus << " against the surface's "
-      << r.surface_genus << (z0.topology.genus == r.surface_genus ? " (kept)" : " (NOT kept)") << ". Cleanup removed "
-      << z0.repair.removed << " and added " << z0.repair.added << " simple voxels";
     if (z0.carve.removed > 0)
         s << "; " << z0.carve.removed - z0.carve.restored << " voxels outside the surface carved away";
     if (z0.attempt_used > 0)
@@ -176,6 +194,32 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
         s << "; cells taken where their centre is inside the surface (parts too close together for the "
              "touched cells to keep apart) to reach the surface's genus";
     s << std::setprecision(3) << "; " << r.initial_seconds << " s.";
+}
+
+std::string summary(const std::string& path, const PipelineResult& r, const std::vector<std::string>& outputs)
+{
+    const InitialModelReport& z0 = r.initial.report;
+    const ZomeModel& m0 = r.initial.model;
+    std::ostringstream s;
+    s << std::setprecision(4);
+    if (r.continued)
+        s << "Continued " << file_name(path) << " from a model of " << m0.nodes.size() << " balls and "
+          << m0.struts.size() << " struts (genus " << z0.topology.genus << " against the surface's " << r.surface_genus
+          << ")"
+          << (r.region ? ", changing only the " + std::to_string(nodes_in_region(m0, *r.region)) +
+                             " balls near the point given and what joins them"
+                       : "")
+          << ".";
+    else
+        s << "Z0 of " << file_name(path) << " at " << r.resolution
+          << " cells along the longest side (b1 = " << z0.grid.cell << " mesh units, grid " << z0.grid.dims[0] << "x"
+          << z0.grid.dims[1] << "x" << z0.grid.dims[2] << "): " << m0.nodes.size() << " balls, " << m0.struts.size()
+          << " B1 struts, " << m0.faces.size() << " quads from " << z0.voxels << " voxels; genus " << z0.topology.genus
+          << " against the surface's " << r.surface_genus
+          << (z0.topology.genus == r.surface_genus ? " (kept)" : " (NOT kept)") << ". Cleanup removed "
+          << z0.repair.removed << " and added " << z0.repair.added << " simple voxels";
+    if (!r.continued)
+        z0_details(s, r);
     if (r.automatic)
         s << " Resolution chosen automatically: " << r.automatic->message << ".";
     if (r.anneal)
@@ -187,6 +231,12 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
           << r.model.nodes.size() << " balls, " << r.model.struts.size() << " struts, genus " << r.model_genus << ", "
           << fold_over_summary(r.fold_overs) << "; " << clearance_summary(r.clearance) << "; "
           << fidelity_summary(r.fidelity) << ".";
+        if (r.fix_spot)
+            s << " The largest gap within the spot: " << std::setprecision(3) << r.spot_gap_before * kMmPerB0
+              << " mm before, " << r.spot_gap_after * kMmPerB0 << " mm after"
+              << (r.kept_start ? " (no try made it smaller, so the model is kept as it was)." : ".");
+        else if (r.kept_start)
+            s << " No model found had a lower energy than the one continued, so it is kept as it was.";
     }
     s << " Wrote";
     for (const std::string& out : outputs)
@@ -228,6 +278,9 @@ int cmd_run(const CommandArgs& argv)
                      "--w-fold",
                      "--size-cm",
                      "--have",
+                     "--from",
+                     "--near",
+                     "--radius",
                      kObjUnitsOption},
                     {"--initial-only", "--fit-kits", "--within-estimate", "--paper-energy", "--no-clearance",
                      "--allow-fold-overs", "--thicken", kNoFacesFlag});
@@ -257,6 +310,7 @@ int cmd_run(const CommandArgs& argv)
     if (args.has("--size-cm"))
         options.b1 = b1_for_size_cm(longest_side(surface.mesh), args.number("--size-cm", 0.0, -1e300, 1e300));
     const PartCounts have = kit_contents(owned);
+    continue_options(args, options);
     if (!owned.empty() && args.has("--within-estimate"))
         throw InvalidInputError(
             "give --have KITS or --within-estimate, not both (with your kits the run keeps within them)");

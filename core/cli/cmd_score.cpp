@@ -1,4 +1,4 @@
-// zomeify score MODEL --mesh MESH [--b0 LENGTH] [--samples N] [--json]: how well a Zome model
+// zomeify score MODEL --mesh MESH [--b0 LENGTH] [--samples N] [--near X,Y,Z --radius R] [--json]: how well a Zome model
 // approximates a mesh, measured the same way for any model (energy terms, fold-overs, distances
 // both ways in b0 and mm with where the largest gap is, clashes between parts).
 // A model without a placement (a .vef from vZome) needs --b0, the mesh length of one b0 strut; its
@@ -10,6 +10,7 @@
 #include "core/base/errors.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
+#include "core/cli/point_arg.h"
 #include "core/io/model_io.h"
 #include "core/mesh/recover_faces.h"
 #include "core/score/fit_translation.h"
@@ -59,7 +60,7 @@ std::string text_report(const ModelScore& s)
 
 int cmd_score(const CommandArgs& argv)
 {
-    const Args args(argv, {"--mesh", "--b0", "--samples"}, {"--json", "--thicken"});
+    const Args args(argv, {"--mesh", "--b0", "--samples", "--near", "--radius"}, {"--json", "--thicken"});
     args.expect_positional(1, "one model file: zomeify score MODEL --mesh MESH [--b0 LENGTH] [--samples N] [--json]");
     const auto mesh_path = args.value("--mesh");
     if (!mesh_path)
@@ -91,6 +92,13 @@ int cmd_score(const CommandArgs& argv)
     }
     ScoreOptions options;
     options.fidelity.samples_per_side = static_cast<int>(args.integer("--samples", 50000, 100, 10000000));
+    if (args.has("--near") != args.has("--radius"))
+        throw InvalidInputError("give --near X,Y,Z and --radius R together (the distances near one point)");
+    if (args.has("--near"))
+    {
+        options.fidelity.near = point_of(*args.value("--near"), "--near");
+        options.fidelity.radius = args.number("--radius", 0.0, 1e-12, 1e300);
+    }
     const ModelScore score = score_model(model, surface, options);
     std::cout << (args.has("--json") ? score_json(score) + "\n" : text_report(score));
     return 0;

@@ -26,7 +26,8 @@ const std::vector<Command>& commands()
          "steps MODEL [--json] [-o steps.html] [--up AXIS]  assembly sequence: steps of a few parts, from the table up",
          cmd_steps},
         {"score",
-         "score MODEL --mesh MESH [--b0 L] [--json] [--thicken]  energy, fold-overs and distance of a model against "
+         "score MODEL --mesh MESH [--b0 L] [--samples N] [--near X,Y,Z --radius R] [--json] [--thicken]\n"
+         "          energy, fold-overs and distance of a model against "
          "a mesh",
          cmd_score},
         {"run",
@@ -38,6 +39,8 @@ const std::vector<Command>& commands()
          "          given a thickness instead of being refused\n"
          "          [--have KITS [--fit-kits]]   the run keeps within the kits you own; --fit-kits chooses the\n"
          "          size and ball count so that it does (checked on the result, up to 3 tries)\n"
+         "          [--from MODEL [--near X,Y,Z --radius R]]   anneal from a model made for this mesh (a .zome.json\n"
+         "          or a share link) instead of Z0; --near: change only the part within R of the point\n"
          "          [--within-estimate]   name the kits before annealing (a short pass) and keep within them,\n"
          "          as the page does",
          cmd_run},

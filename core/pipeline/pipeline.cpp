@@ -13,6 +13,7 @@
 #include "core/pipeline/z0_choice.h"
 #include "core/score/fold_over_report.h"
 #include "core/voxel/advisor.h"
+#include "core/zome/slots.h"
 
 namespace zomeify {
 
@@ -40,23 +41,11 @@ void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyO
     r.model_energy = evaluate_energy(mesh, context, o);
 }
 
-} // namespace
-
-PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus, const PipelineOptions& options,
-                            const PipelineCallbacks& callbacks)
+// Z0 at the options' resolution (or the automatic one), checked, with its report in r.
+ZomeMesh build_z0(PipelineResult& r, const TriangleMesh& surface, const SurfaceProjector& projector,
+                  const PipelineOptions& options, AnnealOptions& anneal)
 {
-    if (options.b1 < 0.0 || !std::isfinite(options.b1))
-        throw InvalidInputError("b1 must be a positive length in mesh units");
-    if (options.b1 == 0.0 && options.resolution != kAutoResolution &&
-        (options.resolution < kMinResolution || options.resolution > kMaxResolution))
-        throw InvalidInputError("the resolution must be between " + std::to_string(kMinResolution) + " and " +
-                                std::to_string(kMaxResolution) + " cells, or automatic");
-
-    Stopwatch clock;
-    PipelineResult r;
-    r.surface_genus = surface_genus;
-
-    const SurfaceProjector projector(surface);
+    const long long surface_genus = r.surface_genus;
     const InsideTest inside(projector);
     const InsidePredicate is_inside = [&](const Vec3& p) { return inside.is_inside(p); };
     InitialModelOptions z0_options = run_z0_options(projector, surface_genus, options.resolution, options.b1);
@@ -66,7 +55,6 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
         z0_options.resolution = r.automatic->resolution;
     }
     // The automatic choice's ball target, unless the user set one (or a size: then Z0's count).
-    AnnealOptions anneal = options.anneal;
     if (r.automatic && anneal.target_nodes == 0)
         anneal.target_nodes = r.automatic->target_nodes;
     r.initial = build_initial_model(surface, is_inside, z0_options);
@@ -88,6 +76,144 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
     // The automatic choice already searched for the genus and says what it found.
     if (options.advise && !r.automatic && z0.topology.genus != surface_genus)
         r.advice = genus_advice(surface, surface_genus, is_inside, r.resolution, z0.topology.genus, z0_options).message;
+
+    return z0_mesh;
+}
+
+// The model to continue (PipelineOptions::from), checked against the surface, as the start.
+ZomeMesh continue_from(PipelineResult& r, const TriangleMesh& surface, const SurfaceProjector& projector,
+                       const PipelineOptions& options, AnnealOptions& anneal)
+{
+    const ZomeModel& from = *options.from;
+    if (const std::string problem = model_fit_problem(from, projector); !problem.empty())
+        throw InvalidInputError(problem);
+    ZomeMesh mesh = from_model(from);
+    const ValidationReport check = validate(mesh);
+    if (!check.ok())
+        throw InvalidInputError("the model to continue is not a closed Zome model: " + check.message());
+    r.continued = true;
+    r.initial.model = from;
+    r.initial.report.valid = true;
+    r.initial.report.topology.genus = check.genus;
+    const auto [lo, hi] = bounding_box(surface);
+    r.resolution =
+        static_cast<int>(std::lround((hi - lo).maxCoeff() / (kind_info(StrutKind::B1).length * from.transform.scale)));
+    const bool default_t0 = anneal.t0_spread_factor == AnnealOptions{}.t0_spread_factor;
+    if (default_t0)
+        anneal.t0_spread_factor = options.fix ? kFixT0Factor : kContinueT0Factor;
+    if (options.fix)
+    {
+        anneal.energy.w_distance *= kFixDistanceWeightFactor;
+        r.region = region_of(*options.fix, from.transform);
+        r.fix_spot = options.fix;
+        if (nodes_in_region(from, *r.region) == 0)
+            throw InvalidInputError("no ball of the model lies within the radius of that point: choose a point on the "
+                                    "model or a larger radius");
+        anneal.region = r.region;
+        if (anneal.target_nodes == 0)
+            anneal.target_nodes = fix_target(from, *r.region);
+    }
+    return mesh;
+}
+
+// One annealing run from `start`: r.anneal and r.model.
+void anneal_once(PipelineResult& r, ZomeMesh start, const SurfaceContext& context, const AnnealOptions& anneal,
+                 const PipelineCallbacks& callbacks)
+{
+    Annealer annealer(std::move(start), context, anneal);
+    const Annealer::ProgressCallback progress = [&](const AnnealProgress& p) {
+        if (callbacks.cancel && callbacks.cancel->load())
+            annealer.cancel();
+        if (callbacks.progress)
+            callbacks.progress(p, annealer);
+    };
+    r.anneal = annealer.run(progress);
+    // A cancelled run keeps its best model; a finished one ends at low temperature, where the
+    // final model is the one the schedule converged to.
+    r.model = r.anneal->stats.cancelled ? r.anneal->best_model : r.anneal->model;
+}
+
+// The ways a fix is tried (fix_spot), each with its share of the budget: cool with the raised
+// ball target, warmer with it, warmer with the model's own count. One, as given, when the user
+// set T0's factor.
+std::vector<AnnealOptions> fix_attempts(const PipelineOptions& options, const AnnealOptions& anneal)
+{
+    if (options.anneal.t0_spread_factor != AnnealOptions{}.t0_spread_factor)
+        return {anneal};
+    std::vector<AnnealOptions> out(kFixAttempts.size(), anneal);
+    for (size_t i = 0; i < out.size(); ++i)
+    {
+        out[i].t0_spread_factor = kFixAttempts[i].t0_factor;
+        if (!kFixAttempts[i].raise_target)
+            out[i].target_nodes = options.from->nodes.size();
+        if (anneal.max_proposals > 0)
+            out[i].max_proposals = std::max<uint64_t>(1, anneal.max_proposals / out.size());
+        else
+            out[i].seconds = anneal.seconds / static_cast<double>(out.size());
+    }
+    return out;
+}
+
+// The largest gap within the spot (b0).
+double spot_gap(const ZomeModel& model, const SurfaceProjector& projector, const FixSpot& spot)
+{
+    FidelityOptions o;
+    o.samples_per_side = kFixGapSamples;
+    o.near = spot.centre;
+    o.radius = spot.radius;
+    return measure_fidelity(model, projector, o).hausdorff;
+}
+
+// Fixing one spot: every attempt from the same model; the one with the smallest largest gap within
+// the spot is kept, or the model as it was when none is smaller (measured from outside the
+// energy: the gap is what the person asked to fix).
+void fix_spot(PipelineResult& r, const ZomeMesh& start, const SurfaceContext& context,
+              const PipelineCallbacks& callbacks, const std::vector<AnnealOptions>& attempts)
+{
+    const FixSpot spot = *r.fix_spot;
+    r.spot_gap_before = r.spot_gap_after = spot_gap(r.initial.model, context.projector(), spot);
+    r.model = r.initial.model;
+    r.kept_start = true;
+    PipelineResult trial;
+    for (const AnnealOptions& a : attempts)
+    {
+        anneal_once(trial, ZomeMesh(start), context, a, callbacks);
+        const double gap = spot_gap(trial.model, context.projector(), spot);
+        if (gap < r.spot_gap_after)
+        {
+            r.spot_gap_after = gap;
+            r.model = trial.model;
+            r.kept_start = false;
+            r.anneal = trial.anneal;
+        }
+        if (!r.anneal || r.kept_start)
+            r.anneal = trial.anneal; // the figures of a run, even when none is kept
+        if (trial.anneal->stats.cancelled)
+            break;
+    }
+}
+
+} // namespace
+
+PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus, const PipelineOptions& options,
+                            const PipelineCallbacks& callbacks)
+{
+    if (options.b1 < 0.0 || !std::isfinite(options.b1))
+        throw InvalidInputError("b1 must be a positive length in mesh units");
+    if (options.b1 == 0.0 && options.resolution != kAutoResolution &&
+        (options.resolution < kMinResolution || options.resolution > kMaxResolution))
+        throw InvalidInputError("the resolution must be between " + std::to_string(kMinResolution) + " and " +
+                                std::to_string(kMaxResolution) + " cells, or automatic");
+    if (options.fix && !options.from)
+        throw InvalidInputError("fixing one spot needs a model to work on (--from MODEL)");
+
+    Stopwatch clock;
+    PipelineResult r;
+    r.surface_genus = surface_genus;
+    const SurfaceProjector projector(surface);
+    AnnealOptions anneal = options.anneal;
+    ZomeMesh z0_mesh = options.from ? continue_from(r, surface, projector, options, anneal)
+                                    : build_z0(r, surface, projector, options, anneal);
     if (callbacks.initial)
         callbacks.initial(r.initial.model);
 
@@ -103,17 +229,19 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
             r.kit_estimate = estimate_kits(projector, r.initial, anneal.target_nodes);
             anneal.part_limits = r.kit_estimate->limits;
         }
-        Annealer annealer(std::move(z0_mesh), context, anneal);
-        const Annealer::ProgressCallback progress = [&](const AnnealProgress& p) {
-            if (callbacks.cancel && callbacks.cancel->load())
-                annealer.cancel();
-            if (callbacks.progress)
-                callbacks.progress(p, annealer);
-        };
-        r.anneal = annealer.run(progress);
-        // A cancelled run keeps its best model; a finished one ends at low temperature, where the
-        // final model is the one the schedule converged to.
-        r.model = r.anneal->stats.cancelled ? r.anneal->best_model : r.anneal->model;
+        if (options.fix)
+            fix_spot(r, z0_mesh, context, callbacks, fix_attempts(options, anneal));
+        else
+        {
+            anneal_once(r, std::move(z0_mesh), context, anneal, callbacks);
+            // Working on a model costs nothing when it finds nothing better: the model as it was.
+            const double end = r.anneal->stats.cancelled ? r.anneal->best.total : r.anneal->end.total;
+            if (r.continued && end > r.anneal->start.total)
+            {
+                r.model = r.initial.model;
+                r.kept_start = true;
+            }
+        }
     }
     check_model(r, context, anneal.energy, anneal.target_nodes ? anneal.target_nodes : r.initial.model.nodes.size(),
                 options.fidelity_samples);

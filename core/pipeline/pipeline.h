@@ -12,6 +12,7 @@
 #include "core/anneal/clearance_index.h"
 #include "core/anneal/engine/annealer.h"
 #include "core/geom/triangle_mesh.h"
+#include "core/pipeline/continue_from.h"
 #include "core/pipeline/kit_estimate.h"
 #include "core/score/fidelity.h"
 #include "core/score/fold_over_report.h"
@@ -43,6 +44,14 @@ struct PipelineOptions
     //! Name the kits before annealing (kit_estimate.h: a quick pass from Z0) and keep the run
     //! within them, as the page does. Not when anneal.part_limits is set (the kits a person owns).
     bool keep_to_kit_estimate = false;
+    //! Continue from this model instead of Z0 (`run --from`; continue_from.h): it must have been
+    //! made for this surface. resolution, b1 and the Z0 options are then unused; the ball target
+    //! defaults to the model's count, T0's factor to kContinueT0Factor, and a result with a higher
+    //! energy than the model gives the model back.
+    std::optional<ZomeModel> from;
+    //! With `from`: change only the model near this spot (`--near X,Y,Z --radius R`); the ball
+    //! target defaults to fix_target().
+    std::optional<FixSpot> fix;
     AnnealOptions anneal;
 };
 
@@ -66,6 +75,12 @@ struct PipelineResult
     std::optional<AutoResolution> automatic; //!< how the resolution was chosen, when automatic
     std::optional<AnnealResult> anneal;      //!< absent with initial_only
     std::optional<KitEstimate> kit_estimate; //!< the kits named before annealing (keep_to_kit_estimate)
+    bool continued = false;                  //!< annealed from PipelineOptions::from, not Z0
+    bool kept_start = false;                 //!< continued, and no result had a lower energy: the model as it was
+    std::optional<ChangeRegion> region;      //!< the spot a fix changed (model units)
+    std::optional<FixSpot> fix_spot;         //!< the same in mesh units
+    double spot_gap_before = 0.0;            //!< a fix: the largest gap within the spot before (b0)
+    double spot_gap_after = 0.0;             //!< and after
     //! The model to write: the best annealed model when the run was cancelled, the final one
     //! otherwise (Z0 with initial_only). Carries the transform and stats_json.
     ZomeModel model;

@@ -149,6 +149,18 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
                              {"typically", kits_text(plan_kits(r.kit_estimate->quick).kits)},
                              {"quick_pass_proposals", kQuickPassProposals},
                              {"seconds", r.kit_estimate->seconds}};
+    if (r.continued)
+    {
+        j["continued"] = {{"from_balls", r.initial.model.nodes.size()},
+                          {"from_struts", r.initial.model.struts.size()},
+                          {"kept_as_it_was", r.kept_start}};
+        if (r.region)
+            j["continued"]["region"] = {{"centre", r.region->centre},
+                                        {"radius", r.region->radius},
+                                        {"balls", nodes_in_region(r.initial.model, *r.region)},
+                                        {"largest_gap_b0_before", r.spot_gap_before},
+                                        {"largest_gap_b0_after", r.spot_gap_after}};
+    }
     if (!r.advice.empty())
         j["advice"] = r.advice;
     if (r.automatic)

@@ -103,6 +103,9 @@ void RunSettings::check() const
     // A proposal budget replaces the time budget; without one the run needs some time.
     if (proposals == 0 && !(seconds > 0.0))
         throw InvalidInputError("option 'seconds' (--seconds) must be positive unless a proposal budget is given");
+    if (radius != 0.0 && !(continue_model && radius > 0.0 && std::isfinite(radius) && std::isfinite(near[0]) &&
+                           std::isfinite(near[1]) && std::isfinite(near[2])))
+        throw InvalidInputError("fixing one spot needs the model to continue, a point and a positive radius");
     if (target_nodes != 0 && target_nodes < 4)
         throw InvalidInputError("option 'target_nodes' (--target-nodes) must be 0 (Z0's count) or at least 4, got " +
                                 std::to_string(target_nodes));
@@ -138,6 +141,25 @@ RunSettings run_settings_from_json(const std::string& json)
         if (!j.at("initial_only").is_boolean())
             throw InvalidInputError("run option 'initial_only' must be true or false");
         s.initial_only = j.at("initial_only").get<bool>();
+    }
+    if (j.contains("continue"))
+    {
+        if (!j.at("continue").is_boolean())
+            throw InvalidInputError("run option 'continue' must be true or false");
+        s.continue_model = j.at("continue").get<bool>();
+    }
+    if (j.contains("near"))
+    {
+        const nlohmann::json& p = j.at("near");
+        if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+            throw InvalidInputError("run option 'near' must be a point [x, y, z]");
+        for (size_t k = 0; k < 3; ++k)
+            s.near[k] = p[k].get<double>();
+        if (!j.contains("radius") || !j.at("radius").is_number())
+            throw InvalidInputError("run option 'near' needs a 'radius'");
+        s.radius = j.at("radius").get<double>();
+        if (!(s.radius > 0.0))
+            throw InvalidInputError("run option 'radius' must be positive");
     }
     if (j.contains("weights"))
     {

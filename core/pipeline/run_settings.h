@@ -4,6 +4,7 @@
 //! validation. The CLI (`zomeify run`), the wasm Session and the page's controls all read them
 //! from here (the page through run_settings_schema_json() at start-up), so they cannot disagree.
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -35,6 +36,13 @@ struct RunSettings
     //! > 0: the built longest side in cm (core/build/real_size.h) instead of the resolution; the
     //! front end that holds the mesh turns it into b1 (the CLI's --size-cm, the page's size field).
     double size_cm = 0.0;
+    //! Continue from the model on screen instead of Z0 (the page's Improve, Fewer balls, More
+    //! detail; the CLI's --from MODEL): the front end that holds the model sets PipelineOptions::from.
+    bool continue_model = false;
+    //! With continue_model, radius > 0: change only the model within `radius` of `near` (mesh
+    //! units; the page's "Fix here", the CLI's --near/--radius).
+    std::array<double, 3> near{};
+    double radius = 0.0;
     EnergyOptions energy; //!< the energy's weights (energy_options.h)
 
     //! Throws InvalidInputError with a one-line message naming the first option out of bounds.
@@ -56,7 +64,8 @@ const std::vector<OptionBounds>& run_option_bounds();
 const OptionBounds& option_bounds(const std::string& key);
 
 //! Reads a JSON object with any of the keys resolution, seconds, proposals, target_nodes, threads,
-//! seed, initial_only, size_cm, weights {dist, orient, fair, complex, surface, fold}; missing keys keep
+//! seed, initial_only, size_cm, continue, near [x, y, z], radius, weights {dist, orient, fair, complex,
+//! surface, fold}; missing keys keep
 //! their defaults. Throws InvalidInputError for a wrong type or a value out of bounds.
 RunSettings run_settings_from_json(const std::string& json);
 

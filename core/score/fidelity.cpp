@@ -81,12 +81,15 @@ void sample_uniformly(const TriangleMesh& mesh, int count, Rng& rng, F&& f)
     }
 }
 
-OneWay distances(const TriangleMesh& from, const SurfaceProjector& to, double scale, int count, Rng& rng)
+OneWay distances(const TriangleMesh& from, const SurfaceProjector& to, double scale, int count, Rng& rng,
+                 const FidelityOptions& options)
 {
     OneWay w;
     double squares = 0.0;
     int n = 0;
     sample_uniformly(from, count, rng, [&](const Vec3& p) {
+        if (options.radius > 0.0 && (p - options.near).squaredNorm() > options.radius * options.radius)
+            return;
         const double d = (to.project(p).point - p).norm() / scale;
         squares += d * d;
         ++n;
@@ -158,8 +161,8 @@ Fidelity measure_fidelity(const ZomeModel& model, const SurfaceProjector& surfac
 
     Fidelity f;
     Rng rng = Rng::for_stream(options.seed, 0);
-    f.model_to_surface = distances(faces, surface, scale, count, rng);
-    f.surface_to_model = distances(surface.mesh(), model_projector, scale, count, rng);
+    f.model_to_surface = distances(faces, surface, scale, count, rng, options);
+    f.surface_to_model = distances(surface.mesh(), model_projector, scale, count, rng, options);
     const double m = f.model_to_surface.rms, s = f.surface_to_model.rms;
     f.rms_symmetric = std::sqrt(0.5 * (m * m + s * s));
     f.gap_is_missed_surface = f.surface_to_model.max >= f.model_to_surface.max;

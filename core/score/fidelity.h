@@ -22,6 +22,10 @@ struct FidelityOptions
     //! area, then a uniform point in it). Deterministic for a given seed.
     int samples_per_side = 50000;
     uint64_t seed = 1;
+    //! radius > 0: only the points within `radius` of `near` (mesh units) count, on both sides (the
+    //! fidelity of one spot, e.g. before and after fixing it).
+    Vec3 near = Vec3::Zero();
+    double radius = 0.0;
 };
 
 //! Distances from one surface's points to the other (b0).

@@ -166,6 +166,14 @@ have=$(sed -E 's/([0-9]+) ([A-Za-z]+) ?([0-9]*)/\1x \2\3/g; s/ \+ /, /g' <<<"$na
 if [ -n "$named" ] && grep -q '"kit_estimate"' "$tmp/w.json" &&
    "${cli[@]}" parts "$tmp/w.zome.json" --have "$have" | grep -q '^missing with your kits: nothing$'; then ok
 else bad "run --within-estimate: named '$named' ($have): $(tail -c 300 <<<"$out")"; fi
+# --from: continue the torus model with fewer balls; a model of another mesh is refused in one line.
+out=$("${cli[@]}" run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --target-nodes 150 --proposals 200000 --threads 1 -o "$tmp/c.zome.json" 2>/dev/null)
+if grep -Eq '^Continued torus.obj from a model of [0-9]+ balls and [0-9]+ struts \(genus 1 against the surface.s 1\)\. Annealed .*genus 1,' <<<"$out"; then ok
+else bad "run --from: $(tail -c 300 <<<"$out")"; fi
+expect_error "from other mesh" '^zomeify: the model to continue was not made for this mesh' run "$shared/data/meshes/bunny.obj" --from "$tmp/w.zome.json" -o "$tmp/x.zome.json"
+expect_error "near alone"      '--near and --radius fix one spot of a model: give it with --from MODEL' run "$shared/data/meshes/torus.obj" --near 0,0,0 --radius 1 -o "$tmp/x.zome.json"
+expect_error "near bad point"  "--near wants a point X,Y,Z in mesh units, got '1,2'" run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --near 1,2 --radius 1 -o "$tmp/x.zome.json"
+expect_error "from and size"   '--from continues a model at its own size' run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --resolution 9 -o "$tmp/x.zome.json"
 expect_error "within and have" 'give --have KITS or --within-estimate' run "$shared/data/meshes/bunny.obj" --have basic --within-estimate -o "$tmp/x.zome.json"
 # --fit-kits with one Creator 3: a plan, then the result's own parts fit the kit or the output says
 # it does not and names the nearest smaller size expected to.

@@ -28,7 +28,8 @@ struct Torus
         o.resolution = resolution;
         o.target_genus = 1;
         o.surface_probe = probe_of(projector);
-        return build_initial_model(mesh, [this](const Vec3& p) { return inside.is_inside(p); }, o);
+        return build_initial_model(
+            mesh, [this](const Vec3& p) { return inside.is_inside(p); }, o);
     }
 };
 

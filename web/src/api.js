@@ -1,6 +1,6 @@
 // window.zomeify: a small scripting API over the page (documented in web/README.md). Every call
 // returns a promise; failures reject with the same one-line message the page shows.
-export function installApi(app, { ready, warmedUp, info, buildView = null }) {
+export function installApi(app, { ready, warmedUp, info, buildView = null, work = null }) {
   const api = {
     /** Resolves with {threaded, maxThreads, crossOriginIsolated} once the first model is shown. */
     ready,
@@ -22,6 +22,10 @@ export function installApi(app, { ready, warmedUp, info, buildView = null }) {
     },
     /** Runs with RunOptions (web/src/protocol.js); resolves with the final progress. */
     run: (options) => app.run(options),
+    /** A step on the model on screen ('improve', 'fewer', 'more', 'fix'); resolves with the run's end. */
+    workOn: (kind) => work.step(kind),
+    /** Puts back the model before the last step. */
+    undo: () => work.undo(),
     cancel: () => app.cancel(),
     /** A resolution set here is kept for the meshes loaded next (scripts choose; the page does not). */
     setOptions: (options) => app.controls.set({ ...options, pinned: options.resolution !== undefined }),

@@ -190,6 +190,7 @@ export class App {
     this.plot.reset();
     this.summaryEl.textContent = 'The model on screen was made before this shape was loaded: press Run for this one.';
     this.showQuality(null);
+    this.onChange?.();
   }
 
   async loadFile(file, options) {
@@ -264,11 +265,16 @@ export class App {
     return { ok: true };
   }
 
-  async run(options = {}) {
+  /**
+   * Runs with the form's settings (`options` set into the form first); `extra` goes to the core
+   * without touching the form (a step on the model on screen: model_work.js).
+   */
+  async run(options = {}, extra = {}) {
     if (this.running) throw new Error('a run is in progress');
     this.controls.set(options);
-    const opts = this.controls.get();
+    const opts = { ...this.controls.get(), ...extra };
     this.running = true;
+    this.onChange?.();
     this.controls.setRunning(true);
     this.plot.reset();
     this.parts.clear(); // the list follows the new model when the run ends
@@ -315,6 +321,7 @@ export class App {
       const note = final.note && keeping === null ? asSentence(final.note) : '';
       this.status.note(`${ended}${verdict} ${note}`.trim());
     }
+    this.onChange?.(); // Run is enabled again: so are the steps on the model
     this.loadQueued();
     return final;
   }
@@ -376,6 +383,7 @@ export class App {
       this.shownSummary = s;
       this.summaryEl.textContent = resultText(s, this.modelOfSurface ? this.surfaceGenus : null);
       this.showQuality(s);
+      this.onChange?.();
       return s;
     } catch (e) {
       this.shownSummary = null;
@@ -383,6 +391,7 @@ export class App {
       this.showKitResult(null, '');
       this.summaryEl.textContent = '';
       this.showQuality(null);
+      this.onChange?.();
       return null;
     }
   }

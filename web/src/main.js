@@ -9,6 +9,7 @@ import { Downloads } from './downloads.js';
 import { Status } from './status.js';
 import { App } from './app.js';
 import { BuildView } from './build_view.js';
+import { ModelWork } from './model_work.js';
 import { installApi } from './api.js';
 import { setupFileInput } from './file_input.js';
 import { SAMPLES } from './samples.js';
@@ -30,12 +31,14 @@ app = new App({ bridge, viewer, controls, plot, parts, status, summaryEl: $('sum
 const buildView = new BuildView(document, { bridge, viewer, status,
   canOpen: () => (app.running ? 'The build plan is made when the run has ended.' : null) });
 new Downloads(document, { bridge, status, baseName: () => app.currentName });
+const work = new ModelWork(document, { app, bridge });
+app.onChange = () => work.refresh();
 
 let resolveReady, rejectReady;
 const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });
 ready.catch(() => {});
 const info = { crossOriginIsolated: self.crossOriginIsolated === true, threaded: false, maxThreads: 1 };
-installApi(app, { buildView, ready, warmedUp: () => booted.then(() => info.warmUpMs, () => null), info });
+installApi(app, { buildView, work, ready, warmedUp: () => booted.then(() => info.warmUpMs, () => null), info });
 
 bridge.on(Event.FATAL, ({ error }) => {
   status.error(`The core could not start: ${error}`);

@@ -20,6 +20,14 @@ struct PartLimits
     uint32_t balls = 0;
 };
 
+//! The part of a model a run may change (`run --from MODEL --near X,Y,Z --radius R`), in model
+//! units (b0): a ball around `centre`.
+struct ChangeRegion
+{
+    std::array<double, 3> centre{};
+    double radius = 0.0;
+};
+
 struct AnnealOptions
 {
     //! Time budget in seconds, used when max_proposals is 0. The temperature reaches
@@ -69,6 +77,9 @@ struct AnnealOptions
     //! Set: no commit raises a part count over its limit (part_tally.h: a starting model over a
     //! limit may only come down to it). Unset: any mix.
     std::optional<PartLimits> part_limits;
+    //! Set: only nodes inside the region move, appear or go, and only struts and faces with a node
+    //! inside it change (change_region.h); seeds are drawn inside it. Unset: the whole model.
+    std::optional<ChangeRegion> region;
     //! Seconds between calls of the progress callback (and best-model snapshots).
     double progress_interval = 0.25;
 };

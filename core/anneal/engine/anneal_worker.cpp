@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/anneal/engine/annealer_state.h"
+#include "core/anneal/engine/change_region.h"
 #include "core/anneal/engine/operator_draw.h"
 #include "core/anneal/engine/seed_slabs.h"
 #include "core/anneal/proposal.h"
@@ -87,6 +88,9 @@ private:
             lock.lock(); // the mesh is read whole
         const int slab = slab_of_thread(epoch, index_, s_.options.threads, s_.slabs.slabs);
         seeds_ = seed_slab(s_.mesh, epoch, slab, s_.slabs.slabs);
+        if (s_.options.region) // fixing one spot: only its nodes are seeds (the rest cannot change)
+            std::erase_if(seeds_,
+                          [this](MeshIndex v) { return !in_region(*s_.options.region, s_.mesh.position(Vertex(v))); });
         slab_epoch_ = epoch;
     }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/anneal/engine/annealer_state.h"
+#include "core/anneal/engine/change_region.h"
 #include "core/anneal/engine/fold_repair.h"
 #include "core/anneal/proposal.h"
 #include "core/base/errors.h"
@@ -216,6 +217,8 @@ Rejection AnnealerState::apply_accepted(const Proposal& proposal, const EnergyDe
     if (options.clearance && check_clearance)
         if (const ClashKind clash = clearance.check(change); clash != ClashKind::None)
             return clash_rejection(clash);
+    if (options.region && !region_allows(mesh, change, *options.region))
+        return Rejection::OutsideRegion;
     PartTally::Counts part_delta{};
     if (parts)
     {

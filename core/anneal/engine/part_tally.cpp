@@ -18,8 +18,8 @@ PartTally::Counts PartTally::change_of(const ZomeMesh& mesh, const LocalChange& 
     for (const NewStrut& s : change.added_struts())
         if (const int id = vector_id_of(s.b - s.a); id >= 0)
             ++d[static_cast<size_t>(vector_kind(id))];
-    d[kStrutKindCount] = static_cast<int64_t>(change.added_nodes().size()) -
-                         static_cast<int64_t>(change.removed_nodes().size());
+    d[kStrutKindCount] =
+        static_cast<int64_t>(change.added_nodes().size()) - static_cast<int64_t>(change.removed_nodes().size());
     return d;
 }
 

@@ -65,6 +65,8 @@ std::string_view rejection_name(Rejection r) noexcept
         return "strut through a face";
     case Rejection::OverKits:
         return "over the kits";
+    case Rejection::OutsideRegion:
+        return "outside the region";
     case Rejection::Overflow:
         return "overflow";
     }

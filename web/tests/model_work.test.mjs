@@ -1,0 +1,73 @@
+// model_work.js: the steps on the model on screen (Improve, Fewer balls, More detail, Fix the
+// largest gap) send the core a continued run at its own size, and Undo loads the model before the
+// last step back (on a fake DOM, with a scripted app and bridge).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { ModelWork, stepTarget, gapSpot, stepText } from '../src/model_work.js';
+import { fakeRoot } from './helpers/fake_dom.mjs';
+
+const summary = (balls, gap) => ({ balls, valid: true,
+  stats: { b1_mesh_units: 0.2, fidelity: { hausdorff_mm: gap, largest_gap: { at: [1, 2, 3] } } } });
+
+function scripted() {
+  const runs = [], loads = [];
+  const app = { shownSummary: summary(400, 50), modelOfSurface: true, running: false,
+    async run(options, extra) {
+      runs.push(extra);
+      this.shownSummary = summary(extra.target_nodes || 401, 40);
+      return { state: 'done', nodes: this.shownSummary.balls };
+    },
+    async refreshResults() { this.shownSummary = summary(400, 50); } };
+  const bridge = { exportModel: async () => ({ bytes: new Uint8Array([1, 2, 3]) }),
+    load: async (name, bytes) => { loads.push({ name, bytes }); return { kind: 'model' }; } };
+  const root = fakeRoot();
+  return { work: new ModelWork(root, { app, bridge }), app, runs, loads, el: (id) => root.querySelector('#' + id) };
+}
+
+test('ball targets: −25 % and +30 % of the model, the same for Improve, at least 4', () => {
+  assert.equal(stepTarget('fewer', 400), 300);
+  assert.equal(stepTarget('more', 400), 520);
+  assert.equal(stepTarget('improve', 400), 400);
+  assert.equal(stepTarget('fewer', 4), 4);
+});
+
+test('the spot a fix changes: the largest gap, within three B1 lengths; none without figures', () => {
+  assert.deepEqual(gapSpot(summary(400, 50)), { near: [1, 2, 3], radius: 0.6000000000000001 });
+  assert.equal(gapSpot({ stats: {} }), null);
+  assert.match(stepText('Fewer balls', summary(400, 50), summary(300, 61)),
+    /^Fewer balls: 400 → 300 balls, largest gap 50 mm → 61 mm\. Undo/);
+});
+
+test('a step continues the model on screen; Undo loads the one before it', async () => {
+  const { work, app, runs, loads, el } = scripted();
+  assert.equal(el('work-fewer').disabled, false);
+  assert.equal(el('work-undo').disabled, true);
+  await work.step('fewer');
+  assert.deepEqual(runs[0], { continue: true, target_nodes: 300 });
+  assert.equal(app.shownSummary.balls, 300);
+  assert.equal(el('work-undo').disabled, false);
+  assert.match(el('work-note').textContent, /400 → 300 balls/);
+  await work.step('fix');
+  assert.deepEqual(runs[1], { continue: true, target_nodes: 0, near: [1, 2, 3], radius: 0.6000000000000001 });
+  await work.undo();
+  await work.undo();
+  assert.equal(loads.length, 2);
+  assert.deepEqual([...loads[0].bytes], [1, 2, 3]);
+  assert.equal(el('work-undo').disabled, true);
+  assert.equal(app.modelOfSurface, true);
+});
+
+test('no steps while a run goes, on a model of another shape, or on an invalid one', () => {
+  const { work, app, el } = scripted();
+  app.running = true;
+  work.refresh();
+  assert.equal(el('work-improve').disabled, true);
+  app.running = false;
+  app.modelOfSurface = false;
+  work.refresh();
+  assert.equal(el('work-more').disabled, true);
+  app.modelOfSurface = true;
+  app.shownSummary = { ...summary(10, 5), valid: false };
+  work.refresh();
+  assert.equal(el('work-fix').disabled, true);
+});
