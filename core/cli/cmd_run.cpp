@@ -231,6 +231,10 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
           << r.model.nodes.size() << " balls, " << r.model.struts.size() << " struts, genus " << r.model_genus << ", "
           << fold_over_summary(r.fold_overs) << "; " << clearance_summary(r.clearance) << "; "
           << fidelity_summary(r.fidelity) << ".";
+        if (r.continued && !r.fix_spot && short_of_target(m0.nodes.size(), r.target_nodes, r.model.nodes.size()))
+            s << " It reached " << r.model.nodes.size() << " balls of the " << r.target_nodes
+              << " asked: at this size the model cannot " << (r.target_nodes < m0.nodes.size() ? "lose" : "take")
+              << " more balls this way (the paper's saturation point).";
         if (r.fix_spot)
             s << " The largest gap within the spot: " << std::setprecision(3) << r.spot_gap_before * kMmPerB0
               << " mm before, " << r.spot_gap_after * kMmPerB0 << " mm after"

@@ -71,6 +71,16 @@ std::string model_fit_problem(const ZomeModel& model, const SurfaceProjector& pr
     return "";
 }
 
+bool short_of_target(size_t start, size_t target, size_t reached)
+{
+    const double slack = std::max(3.0, 0.1 * static_cast<double>(target));
+    if (target < start)
+        return static_cast<double>(reached) > static_cast<double>(target) + slack;
+    if (target > start)
+        return static_cast<double>(reached) < static_cast<double>(target) - slack;
+    return false;
+}
+
 ChangeRegion region_of(const FixSpot& spot, const ModelTransform& t)
 {
     ChangeRegion r;

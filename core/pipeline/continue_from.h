@@ -45,6 +45,10 @@ inline constexpr int kFixGapSamples = 60000;
 //! another mesh, or for this mesh at another scale, or one whose transform was lost).
 std::string model_fit_problem(const ZomeModel& model, const SurfaceProjector& projector);
 
+//! Whether a continued run stopped short of its ball target: more than 10 % (and 3 balls) away
+//! from it in the direction asked (the paper's saturation point of a decimation).
+bool short_of_target(size_t start, size_t target, size_t reached);
+
 //! The spot in the model's own units.
 ChangeRegion region_of(const FixSpot& spot, const ModelTransform& transform);
 

@@ -95,9 +95,10 @@ ZomeMesh continue_from(PipelineResult& r, const TriangleMesh& surface, const Sur
     r.initial.model = from;
     r.initial.report.valid = true;
     r.initial.report.topology.genus = check.genus;
+    // The model's own scale: its B1 length in mesh units, as Z0's cell would be.
+    r.initial.report.grid.cell = kind_info(StrutKind::B1).length * from.transform.scale;
     const auto [lo, hi] = bounding_box(surface);
-    r.resolution =
-        static_cast<int>(std::lround((hi - lo).maxCoeff() / (kind_info(StrutKind::B1).length * from.transform.scale)));
+    r.resolution = static_cast<int>(std::lround((hi - lo).maxCoeff() / r.initial.report.grid.cell));
     const bool default_t0 = anneal.t0_spread_factor == AnnealOptions{}.t0_spread_factor;
     if (default_t0)
         anneal.t0_spread_factor = options.fix ? kFixT0Factor : kContinueT0Factor;
@@ -243,8 +244,8 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
             }
         }
     }
-    check_model(r, context, anneal.energy, anneal.target_nodes ? anneal.target_nodes : r.initial.model.nodes.size(),
-                options.fidelity_samples);
+    r.target_nodes = anneal.target_nodes ? anneal.target_nodes : r.initial.model.nodes.size();
+    check_model(r, context, anneal.energy, r.target_nodes, options.fidelity_samples);
     r.seconds = clock.seconds();
     return r;
 }

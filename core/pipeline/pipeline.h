@@ -76,6 +76,7 @@ struct PipelineResult
     std::optional<AnnealResult> anneal;      //!< absent with initial_only
     std::optional<KitEstimate> kit_estimate; //!< the kits named before annealing (keep_to_kit_estimate)
     bool continued = false;                  //!< annealed from PipelineOptions::from, not Z0
+    size_t target_nodes = 0;                 //!< the ball target the annealer had
     bool kept_start = false;                 //!< continued, and no result had a lower energy: the model as it was
     std::optional<ChangeRegion> region;      //!< the spot a fix changed (model units)
     std::optional<FixSpot> fix_spot;         //!< the same in mesh units

@@ -151,9 +151,12 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
                              {"seconds", r.kit_estimate->seconds}};
     if (r.continued)
     {
-        j["continued"] = {{"from_balls", r.initial.model.nodes.size()},
-                          {"from_struts", r.initial.model.struts.size()},
-                          {"kept_as_it_was", r.kept_start}};
+        j["continued"] = {
+            {"from_balls", r.initial.model.nodes.size()},
+            {"from_struts", r.initial.model.struts.size()},
+            {"kept_as_it_was", r.kept_start},
+            {"target_nodes", r.target_nodes},
+            {"short_of_target", short_of_target(r.initial.model.nodes.size(), r.target_nodes, r.model.nodes.size())}};
         if (r.region)
             j["continued"]["region"] = {{"centre", r.region->centre},
                                         {"radius", r.region->radius},

@@ -101,6 +101,8 @@ TEST(ContinueFrom, FewerBallsKeepTheGenusAndNeverEndAboveTheStart)
     EXPECT_TRUE(fewer.model_valid) << fewer.validation;
     EXPECT_EQ(fewer.model_genus, 1);
     EXPECT_LT(fewer.model.nodes.size(), n);
+    EXPECT_NEAR(fewer.initial.report.grid.cell, kind_info(StrutKind::B1).length * annealed_torus().transform.scale,
+                1e-12); // the stats' b1 is the model's own
     // Improve, with a budget too small to find anything: the model comes back as it was at worst.
     PipelineOptions improve = continuing(2000);
     const PipelineResult same = run_pipeline(torus(), 1, improve);

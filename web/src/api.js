@@ -24,6 +24,10 @@ export function installApi(app, { ready, warmedUp, info, buildView = null, work 
     run: (options) => app.run(options),
     /** A step on the model on screen ('improve', 'fewer', 'more', 'fix'); resolves with the run's end. */
     workOn: (kind) => work.step(kind),
+    /** Chooses the spot of Fix here, as a click on the shape does (mesh units). */
+    chooseSpot: (point) => work.setSpot(point),
+    /** The spot chosen, or null. */
+    spot: () => work.spot,
     /** Puts back the model before the last step. */
     undo: () => work.undo(),
     cancel: () => app.cancel(),

@@ -173,6 +173,8 @@ export class App {
       if (runNow && !this.running) return { ...result, run: await this.run() };
     } else {
       this.modelOfSurface = false;
+      // A saved model dropped after its mesh can be worked on (the core checks it was made for it).
+      this.modelAfterMesh = this.surfaceGenus !== null;
       note(`${name}: model loaded.`);
       await this.refreshResults();
       this.showModelResolution(this.shownSummary?.stats?.resolution);
@@ -185,6 +187,7 @@ export class App {
     this.viewer.setSurfaceVisible?.(true);
     if (this.surfaceToggleEl) this.surfaceToggleEl.checked = true;
     this.modelOfSurface = false;
+    this.modelAfterMesh = false;
     this.controls.shapeChanged?.(); // the last shape's estimate and advice go at once
     this.parts.clear();
     this.plot.reset();
@@ -226,6 +229,7 @@ export class App {
     if (model) await this.loadBytes(sample.id + '.zome.json', model, { fit });
     await this.loadBytes(sample.mesh, mesh, { fit: !model, chooseResolution: false, fresh: !model });
     this.modelOfSurface = Boolean(model);
+    this.onChange?.(); // the sample's model can be worked on at once
     // The sample's model was made from this mesh: its line now compares their holes.
     if (model && this.shownSummary) this.summaryEl.textContent = resultText(this.shownSummary, this.surfaceGenus);
     this.controls.set({ resolution: sample.resolution });

@@ -33,6 +33,7 @@ const buildView = new BuildView(document, { bridge, viewer, status,
 new Downloads(document, { bridge, status, baseName: () => app.currentName });
 const work = new ModelWork(document, { app, bridge });
 app.onChange = () => work.refresh();
+viewer.onPick = (point) => work.setSpot(point); // a click on the shape chooses the spot of Fix here
 
 let resolveReady, rejectReady;
 const ready = new Promise((resolve, reject) => { resolveReady = resolve; rejectReady = reject; });

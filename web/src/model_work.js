@@ -11,24 +11,37 @@ export function stepTarget(kind, balls) {
   return Math.max(4, Math.round(balls * STEP_FACTORS[kind]));
 }
 
-/** The spot a fix changes: the largest gap, within three B1 lengths (mesh units) of it (docs/work-on-a-model.md). */
-export function gapSpot(summary) {
-  const at = summary?.stats?.fidelity?.largest_gap?.at;
+/** How far a fix reaches: three B1 lengths (docs/work-on-a-model.md has the measurements). */
+export const FIX_RADIUS_B1 = 3;
+const B1_MM = 74.86; // core/zome/real_sizes.h
+
+/** The spot a fix changes around `at` (mesh units), or null without the model's scale. */
+export function spotAround(at, summary) {
   const b1 = summary?.stats?.b1_mesh_units;
   if (!Array.isArray(at) || at.length !== 3 || !(b1 > 0)) return null;
-  return { near: at, radius: 3 * b1 };
+  return { near: at.map(Number), radius: FIX_RADIUS_B1 * b1 };
+}
+
+/** The spot of "Fix the largest gap": the gap the quality line names. */
+export function gapSpot(summary) {
+  return spotAround(summary?.stats?.fidelity?.largest_gap?.at, summary);
 }
 
 /** What the note says after a step: balls and largest gap before and after. */
 export function stepText(label, before, after) {
   const gap = (s) => s?.stats?.fidelity?.hausdorff_mm;
   const mm = (v) => (Number.isFinite(v) ? `${Math.round(v)} mm` : 'not measured');
+  const c = after.stats?.continued;
+  const short = c?.short_of_target
+    ? `; it reached ${after.balls} of the ${c.target_nodes} balls asked: at this size the model cannot change more this way`
+    : '';
   return `${label}: ${before.balls} → ${after.balls} balls, largest gap ${mm(gap(before))} → ${mm(gap(after))}` +
-    (after.stats?.continued?.kept_as_it_was ? ' (nothing better found: the model is as it was)' : '') +
+    (c?.kept_as_it_was ? ' (nothing better found: the model is as it was)' : '') + short +
     '. Undo puts the previous model back.';
 }
 
-const LABELS = { improve: 'Improve', fewer: 'Fewer balls', more: 'More detail', fix: 'Fix the largest gap' };
+const LABELS = { improve: 'Improve', fewer: 'Fewer balls', more: 'More detail', fix: 'Fix the largest gap',
+  here: 'Fix here' };
 
 export class ModelWork {
   /** @param {Document|HTMLElement} root  @param {{app: object, bridge: object}} deps */
@@ -37,6 +50,7 @@ export class ModelWork {
     this.app = app;
     this.bridge = bridge;
     this.undoStack = []; // .zome.json bytes of the models before each step
+    this.spot = null;    // a point of the surface clicked in the viewer (mesh units), for Fix here
     for (const kind of Object.keys(LABELS)) this.el(kind)?.addEventListener('click', () => this.step(kind));
     this.el('undo')?.addEventListener('click', () => this.undo());
     this.refresh();
@@ -47,10 +61,14 @@ export class ModelWork {
   /** The buttons follow the model on screen: a valid model of the loaded shape, no run going. */
   refresh() {
     const s = this.app.shownSummary;
-    const ready = Boolean(s && s.valid && this.app.modelOfSurface && !this.app.running);
+    const ofMesh = this.app.modelOfSurface || this.app.modelAfterMesh;
+    const ready = Boolean(s && s.valid && ofMesh && !this.app.running);
+    const hint = 'To work on this model (Improve, Fewer balls, …), drop the mesh it was made from, then the model.';
+    if (s?.valid && !ofMesh && !this.app.running) this.note(hint);
+    else if (this.el('note')?.textContent === hint) this.note('');
     for (const kind of Object.keys(LABELS)) {
       const b = this.el(kind);
-      if (b) b.disabled = !ready || (kind === 'fix' && !gapSpot(s));
+      if (b) b.disabled = !ready || (kind === 'fix' && !gapSpot(s)) || (kind === 'here' && !spotAround(this.spot, s));
     }
     const undo = this.el('undo');
     if (undo) undo.disabled = this.app.running || this.undoStack.length === 0;
@@ -61,8 +79,10 @@ export class ModelWork {
     const before = this.app.shownSummary;
     if (!before || this.app.running) return null;
     const saved = (await this.bridge.exportModel('before.zome.json')).bytes;
-    const extra = { continue: true, target_nodes: kind === 'fix' ? 0 : stepTarget(kind, before.balls) };
+    const fix = kind === 'fix' || kind === 'here';
+    const extra = { continue: true, target_nodes: fix ? 0 : stepTarget(kind, before.balls) };
     if (kind === 'fix') Object.assign(extra, gapSpot(before));
+    if (kind === 'here') Object.assign(extra, spotAround(this.spot, before));
     const final = await this.app.run({}, extra);
     if (final.state !== 'failed' && final.nodes > 0) {
       this.undoStack.push(saved);
@@ -76,11 +96,21 @@ export class ModelWork {
   async undo() {
     const bytes = this.undoStack.pop();
     if (!bytes || this.app.running) return;
-    await this.bridge.load('before.zome.json', bytes.slice(0));
+    await this.bridge.load('before.zome.json', bytes.slice().buffer); // an ArrayBuffer, handed to the worker
     this.app.modelOfSurface = true; // it was made for the shape loaded
     await this.app.refreshResults();
     this.note(`Back to the previous model (${this.app.shownSummary?.balls ?? '?'} balls).`);
     this.refresh();
+  }
+
+  /** A point of the surface was clicked: Fix here will change the model around it. */
+  setSpot(point) {
+    this.spot = point;
+    this.refresh();
+    if (this.app.shownSummary && this.app.modelOfSurface) {
+      this.note(`Spot chosen: Fix here changes only the model within about ${Math.round(FIX_RADIUS_B1 * B1_MM / 10)} cm ` +
+        'of it (click the shape elsewhere to choose another).');
+    }
   }
 
   note(text) {

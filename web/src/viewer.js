@@ -21,6 +21,18 @@ export class Viewer {
     this.showSurface = false;
     this.pending = new Map();
     this.nextId = 1;
+    this.pickMesh = null; // the surface on this thread, for clicks (the render worker has its own copy)
+    this.onPick = null;   // (point [x, y, z], mesh units) after a click on the surface
+    this.pointerDown = null;
+    this.canvas.addEventListener('pointerdown', (e) => { this.pointerDown = { x: e.clientX, y: e.clientY }; });
+    this.canvas.addEventListener('pointerup', (e) => {
+      const d = this.pointerDown;
+      this.pointerDown = null;
+      // A click, not the end of a drag that turned the model.
+      if (!d || Math.hypot(e.clientX - d.x, e.clientY - d.y) > 4 || !this.onPick) return;
+      const point = this.pick(e.clientX, e.clientY);
+      if (point) this.onPick(point);
+    });
 
     const offscreen = this.canvas.transferControlToOffscreen();
     this.worker = new Worker(new URL('./render/render_worker.js', import.meta.url), { type: 'module' });
@@ -74,10 +86,26 @@ export class Viewer {
     if (fit) this.fit();
   }
 
+  /** The point of the input surface under a click (client pixels), or null. */
+  pick(clientX, clientY) {
+    if (!this.pickMesh) return null;
+    const r = this.canvas.getBoundingClientRect();
+    const ndc = new THREE.Vector2(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1);
+    const ray = new THREE.Raycaster();
+    ray.setFromCamera(ndc, this.camera);
+    const hit = ray.intersectObject(this.pickMesh, false)[0];
+    return hit ? hit.point.toArray() : null;
+  }
+
   /** The input surface (mesh units), drawn translucent when shown; null removes it. */
   setSurface(surface) {
     this.surfaceBounds = null;
+    this.pickMesh = null;
     if (surface) {
+      const geometry = new THREE.BufferGeometry();
+      geometry.setAttribute('position', new THREE.BufferAttribute(surface.positions.slice(), 3));
+      geometry.setIndex(new THREE.BufferAttribute(surface.triangles.slice(), 1));
+      this.pickMesh = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ side: THREE.DoubleSide }));
       const box = new THREE.Box3(), p = new THREE.Vector3();
       for (let i = 0; i < surface.positions.length; i += 3) box.expandByPoint(p.fromArray(surface.positions, i));
       this.surfaceBounds = box;

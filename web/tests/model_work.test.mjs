@@ -36,6 +36,9 @@ test('the spot a fix changes: the largest gap, within three B1 lengths; none wit
   assert.equal(gapSpot({ stats: {} }), null);
   assert.match(stepText('Fewer balls', summary(400, 50), summary(300, 61)),
     /^Fewer balls: 400 → 300 balls, largest gap 50 mm → 61 mm\. Undo/);
+  const stuck = { ...summary(190, 70), stats: { ...summary(190, 70).stats,
+    continued: { short_of_target: true, target_nodes: 142 } } };
+  assert.match(stepText('Fewer balls', summary(196, 70), stuck), /it reached 190 of the 142 balls asked/);
 });
 
 test('a step continues the model on screen; Undo loads the one before it', async () => {
@@ -49,10 +52,17 @@ test('a step continues the model on screen; Undo loads the one before it', async
   assert.match(el('work-note').textContent, /400 → 300 balls/);
   await work.step('fix');
   assert.deepEqual(runs[1], { continue: true, target_nodes: 0, near: [1, 2, 3], radius: 0.6000000000000001 });
+  assert.equal(el('work-here').disabled, true); // no spot chosen yet
+  work.setSpot([4, 5, 6]);
+  assert.equal(el('work-here').disabled, false);
+  assert.match(el('work-note').textContent, /^Spot chosen: Fix here changes only the model within about 22 cm/);
+  await work.step('here');
+  assert.deepEqual(runs[2], { continue: true, target_nodes: 0, near: [4, 5, 6], radius: 0.6000000000000001 });
   await work.undo();
   await work.undo();
-  assert.equal(loads.length, 2);
-  assert.deepEqual([...loads[0].bytes], [1, 2, 3]);
+  await work.undo();
+  assert.equal(loads.length, 3);
+  assert.deepEqual([...new Uint8Array(loads[0].bytes)], [1, 2, 3]);
   assert.equal(el('work-undo').disabled, true);
   assert.equal(app.modelOfSurface, true);
 });
@@ -66,6 +76,12 @@ test('no steps while a run goes, on a model of another shape, or on an invalid o
   app.modelOfSurface = false;
   work.refresh();
   assert.equal(el('work-more').disabled, true);
+  assert.match(el('work-note').textContent, /drop the mesh it was made from, then the model/);
+  app.modelAfterMesh = true; // a saved model dropped after its mesh
+  work.refresh();
+  assert.equal(el('work-more').disabled, false);
+  assert.equal(el('work-note').textContent, '');
+  app.modelAfterMesh = false;
   app.modelOfSurface = true;
   app.shownSummary = { ...summary(10, 5), valid: false };
   work.refresh();
