@@ -174,10 +174,11 @@ std::string Session::load_model(const std::string& bytes, const std::string& fil
             throw InvalidInputError("a run is in progress; cancel it first");
         if (bytes.empty())
             throw InvalidInputError(file_name + ": the file is empty");
-        ZomeModel m = read_model_buffer(bytes, file_name);
+        std::vector<std::string> notes;
+        ZomeModel m = read_model_buffer(bytes, file_name, &notes);
         parts_list(m); // rejects struts that are not Zome vectors before the model is shown
         set_model(std::move(m), "file");
-        return nlohmann::json{{"ok", true}, {"kind", "model"}}.dump();
+        return nlohmann::json{{"ok", true}, {"kind", "model"}, {"notes", notes}}.dump();
     });
 }
 

@@ -17,7 +17,10 @@ void warn_of_clashes(const ZomeModel& model, const std::string& source)
 
 ZomeModel read_model_warning_of_clashes(const std::string& path)
 {
-    ZomeModel model = read_model_file(path);
+    std::vector<std::string> notes;
+    ZomeModel model = read_model_file(path, &notes);
+    for (const std::string& note : notes)
+        std::cerr << "note: " << path << ": " << note << "\n";
     warn_of_clashes(model, path);
     return model;
 }

@@ -9,7 +9,8 @@
 
 namespace zomeify::cli {
 
-//! read_model_file(path), then "warning: PATH: N clashes: …" on stderr if it has clashes.
+//! read_model_file(path), its notes as "note: PATH: …" on stderr (vef.h), then "warning: PATH: N
+//! clashes: …" if it has clashes.
 ZomeModel read_model_warning_of_clashes(const std::string& path);
 
 //! The same warning for a model from elsewhere (a share link), named `source`.

@@ -47,24 +47,30 @@ std::string mtl_file_name(const std::string& obj_path)
 
 } // namespace
 
-ZomeModel read_model_buffer(std::string_view bytes, const std::string& file_name)
+ZomeModel read_model_buffer(std::string_view bytes, const std::string& file_name, std::vector<std::string>* notes)
 {
     switch (format_of(file_name, false))
     {
     case ModelFormat::ZomeJson:
         return read_zome_json(bytes);
     case ModelFormat::Vef:
-        return read_vef(bytes);
+    {
+        VefReadInfo info;
+        ZomeModel model = read_vef(bytes, &info);
+        if (notes)
+            *notes = std::move(info.notes);
+        return model;
+    }
     default:
         break;
     }
     throw InvalidInputError("unknown model format");
 }
 
-ZomeModel read_model_file(const std::string& path)
+ZomeModel read_model_file(const std::string& path, std::vector<std::string>* notes)
 {
     format_of(path, false); // refuse unknown formats before reading the file
-    return read_model_buffer(read_file_bytes(path), path);
+    return read_model_buffer(read_file_bytes(path), path, notes);
 }
 
 std::string write_model_buffer(const ZomeModel& model, const std::string& file_name, const WriteOptions& options)

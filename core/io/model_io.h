@@ -6,6 +6,7 @@
 
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "core/io/obj_export.h"
 #include "core/zome/model.h"
@@ -20,9 +21,12 @@ struct WriteOptions
 };
 
 //! Reads a model file; InvalidInputError/IoError with a one-line message on failure.
-ZomeModel read_model_file(const std::string& path);
+//! `notes` (optional) receives what a person should know of the file (a VEF's strut ends without
+//! a ball, vertices left out: vef.h).
+ZomeModel read_model_file(const std::string& path, std::vector<std::string>* notes = nullptr);
 //! Reads a model from bytes; `file_name` decides the format by its extension.
-ZomeModel read_model_buffer(std::string_view bytes, const std::string& file_name);
+ZomeModel read_model_buffer(std::string_view bytes, const std::string& file_name,
+                            std::vector<std::string>* notes = nullptr);
 //! The model in the format named by the extension of `file_name`.
 std::string write_model_buffer(const ZomeModel& model, const std::string& file_name, const WriteOptions& options = {});
 void write_model_file(const std::string& path, const ZomeModel& model, const WriteOptions& options = {});

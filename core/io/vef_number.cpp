@@ -30,7 +30,8 @@ GoldenFraction reduced(QPhi n, int64_t d)
 
 [[noreturn]] void bad(std::string_view token, const std::string& what, const char* why)
 {
-    throw InvalidInputError("not a valid VEF file: " + what + ": '" + std::string(token.substr(0, 40)) + "' " + why);
+    const std::string shown = token.size() > 40 ? std::string(token.substr(0, 40)) + "…" : std::string(token);
+    throw InvalidInputError("not a valid VEF file: " + what + ": '" + shown + "' " + why);
 }
 
 // "p" or "p/q" with q != 0.
@@ -39,6 +40,8 @@ GoldenFraction parse_rational(std::string_view s, std::string_view token, const 
     auto integer = [&](std::string_view t) {
         int64_t x = 0;
         const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), x);
+        if (!t.empty() && ec == std::errc::result_out_of_range)
+            bad(token, what, "has a number too large for exact arithmetic here (at most 19 digits)");
         if (t.empty() || ec != std::errc() || end != t.data() + t.size())
             bad(token, what, "is not a number (integers, fractions p/q or (a,b) = a·φ + b)");
         return x;

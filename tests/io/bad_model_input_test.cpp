@@ -53,7 +53,7 @@ TEST(BadModelInput, VefProblemsAreNamed)
               std::string::npos);
     EXPECT_NE(error_of(std::string(kHeader) + "1 (0,0) (x,1) (0,0) (0,0) 0", "a.vef").find("not a number"),
               std::string::npos);
-    EXPECT_NE(error_of("vZome VEF 6 field rootTwo 0 0", "a.vef").find("not the golden field"), std::string::npos);
+    EXPECT_NE(error_of("vZome VEF 6 field rootTwo 0 0", "a.vef").find("made in the golden field"), std::string::npos);
     EXPECT_NE(error_of(std::string(kHeader) + "1 (0,0) (99999999999999,0) (0,0) (0,0) 0", "a.vef").find("too large"),
               std::string::npos);
 }

@@ -175,7 +175,9 @@ export class App {
       this.modelOfSurface = false;
       // A saved model dropped after its mesh can be worked on (the core checks it was made for it).
       this.modelAfterMesh = this.surfaceGenus !== null;
-      note(`${name}: model loaded.`);
+      // What the file leaves to the builder (a VEF's strut ends without a ball, …), said once.
+      const notes = (result.notes || []).map((n) => ` ${n[0].toUpperCase()}${n.slice(1)}.`).join('');
+      note(`${name}: model loaded.${notes}`);
       await this.refreshResults();
       this.showModelResolution(this.shownSummary?.stats?.resolution);
     }
