@@ -195,7 +195,8 @@ expect_error "steps apart"   'not one piece'          steps "$tmp/apart.zome.jso
 expect_error "steps bad up"  'up axis must be x, y or z' steps "$bunny" --up w
 expect_error "steps bad out" 'writes .html pages'      steps "$bunny" -o "$tmp/steps.pdf"
 
-printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/nonzome.vef"
+printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,4) (0,0) 1 0 1' > "$tmp/nonzome.vef"
+printf 'vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1' > "$tmp/green.vef"
 head -c 700 "$bunny" > "$tmp/truncated.vef"
 printf 'vZome VEF 6 field golden 999999999999 (0,0)' > "$tmp/absurd.vef"
 printf '{"format":"zomeify-model","version":1,"nodes":[[0,0,0,0,0,0]],"struts":[[0,3]]}' > "$tmp/index.zome.json"
@@ -207,6 +208,13 @@ expect_error "missing file"   'cannot open'           parts "$tmp/missing.vef"
 expect_error "unknown option" 'unknown option --xml'  parts "$bunny" --xml
 expect_error "both formats"   'one of --json and --csv' parts "$bunny" --json --csv
 expect_error "non-zome strut" 'not a Zome strut'      parts "$tmp/nonzome.vef"
+expect_error "green strut"    'is a green strut: green struts are not supported yet' parts "$tmp/green.vef"
+printf 'vZome VEF 10 field golden 3 (0,0) (0,0) (0,0) (0,0) (0,0) (4,2) (0,0) (0,0) (0,0) (8,4) (0,0) (0,0) 2 0 1 1 2 0 2 0 1' > "$tmp/bare.vef"
+expect_stderr_note() { # a model read with a note on stderr, exit 0
+  if "${cli[@]}" parts "$tmp/bare.vef" >/dev/null 2>"$tmp/err" && grep -q '^note: .*bare.vef: 1 strut end has no ball in the file' "$tmp/err"; then ok
+  else bad "vef note: $(cat "$tmp/err")"; fi
+}
+expect_stderr_note
 expect_error "truncated vef"  'truncated|ends early'  parts "$tmp/truncated.vef"
 expect_error "absurd count"   'count 999999999999'    parts "$tmp/absurd.vef"
 expect_error "bad index"      'does not exist'        parts "$tmp/index.zome.json"

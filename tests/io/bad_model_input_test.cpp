@@ -40,8 +40,12 @@ TEST(BadModelInput, VefProblemsAreNamed)
     EXPECT_NE(error_of("hello world", "a.vef").find("vZome VEF"), std::string::npos);
     EXPECT_NE(error_of(std::string(kHeader) + "2 (0,0) (0,0) (0,0) (0,0) (0,0) (4,2)", "a.vef").find("truncated"),
               std::string::npos);
-    // A strut of length √2 along x + y.
+    // A strut of length √2 along x + y: a green strut.
     EXPECT_NE(error_of(std::string(kHeader) + "2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,2) (0,0) 1 0 1", "a.vef")
+                  .find("is a green strut: green struts are not supported yet"),
+              std::string::npos);
+    // Along x + 2y: no Zometool strut at all.
+    EXPECT_NE(error_of(std::string(kHeader) + "2 (0,0) (0,0) (0,0) (0,0) (0,0) (0,2) (0,4) (0,0) 1 0 1", "a.vef")
                   .find("not a Zome strut"),
               std::string::npos);
     EXPECT_NE(error_of(std::string(kHeader) + "2 (0,0) (0,0) (0,0) (0,0) (0,0) (4,2) (0,0) (0,0) 1 0 7", "a.vef")
@@ -54,8 +58,9 @@ TEST(BadModelInput, VefProblemsAreNamed)
     EXPECT_NE(error_of(std::string(kHeader) + "1 (0,0) (x,1) (0,0) (0,0) 0", "a.vef").find("not a number"),
               std::string::npos);
     EXPECT_NE(error_of("vZome VEF 6 field rootTwo 0 0", "a.vef").find("made in the golden field"), std::string::npos);
-    EXPECT_NE(error_of(std::string(kHeader) + "1 (0,0) (99999999999999,0) (0,0) (0,0) 0", "a.vef").find("too large"),
-              std::string::npos);
+    EXPECT_NE(
+        error_of(std::string(kHeader) + "1 (0,0) (99999999999999,0) (0,0) (0,0) 0 0 1 0", "a.vef").find("too large"),
+        std::string::npos);
 }
 
 TEST(BadModelInput, JsonProblemsAreNamed)

@@ -135,7 +135,7 @@ TEST(VefVzome, GarbageStillHasClearMessages)
     EXPECT_NE(vef_error("vZome VEF 6 field golden 2 (0,0) (0,0) (0,0) (0,0) (0,0) (1/3,0) (0,0) (0,0) 1 0 1")
                   .find("not a Zome strut"),
               std::string::npos);
-    EXPECT_NE(vef_error("vZome VEF 6 field golden 1 (0,0) (99999999999999999,0) (0,0) (0,0) 0").find("too large"),
+    EXPECT_NE(vef_error("vZome VEF 6 field golden 1 (0,0) (99999999999999999,0) (0,0) (0,0) 0 0 1 0").find("too large"),
               std::string::npos);
 }
 

@@ -53,6 +53,14 @@ test('a model file: its snapshot is framed, later ones are not; name, summary an
   assert.equal(t.parts.shown, 1);
 });
 
+test('a VEF\'s notes follow "model loaded" on the status line, each a sentence', async () => {
+  const t = makeApp();
+  t.bridge.load = async () => ({ kind: 'model', notes: ['1 strut end has no ball in the file (vZome draws none there)'] });
+  await t.app.loadBytes('part.vef', new ArrayBuffer(1));
+  assert.equal(t.statusEl.textContent,
+    'part.vef: model loaded. 1 strut end has no ball in the file (vZome draws none there).');
+});
+
 test('quality line: the fidelity sentence of a run, and whether the parts fit side by side', () => {
   assert.equal(qualityText({}), '');
   assert.equal(qualityText({ clashes: 0, clearance: 'no clashes: the closest parts are two struts 2.3 mm apart' }),
