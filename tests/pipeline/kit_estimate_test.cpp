@@ -11,27 +11,13 @@
 #include "core/geom/inside.h"
 #include "core/parts/kit_fit.h"
 #include "core/pipeline/pipeline.h"
-#include "tests/support/geom_fixtures.h"
+#include "tests/support/torus_surface.h"
 
 using namespace zomeify;
 
 namespace {
 
-struct Torus
-{
-    TriangleMesh mesh = test::make_torus(3.0, 1.2, 48, 24);
-    SurfaceProjector projector{mesh};
-    InsideTest inside{projector};
-    InitialModel z0(int resolution) const
-    {
-        InitialModelOptions o;
-        o.resolution = resolution;
-        o.target_genus = 1;
-        o.surface_probe = probe_of(projector);
-        return build_initial_model(
-            mesh, [this](const Vec3& p) { return inside.is_inside(p); }, o);
-    }
-};
+using Torus = test::TorusSurface;
 
 PartCounts counts_of(const ZomeModel& m) { return part_counts(parts_list(m)); }
 

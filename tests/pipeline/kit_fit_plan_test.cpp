@@ -7,22 +7,17 @@
 #include "core/geom/closest_point.h"
 #include "core/geom/inside.h"
 #include "core/voxel/initial_model.h"
-#include "tests/support/geom_fixtures.h"
+#include "tests/support/torus_surface.h"
 
 using namespace zomeify;
 
 namespace {
 
-struct Torus
+struct Torus : test::TorusSurface
 {
-    TriangleMesh mesh = test::make_torus(3.0, 1.2, 48, 24);
-    SurfaceProjector projector{mesh};
-    InsideTest inside{projector};
     KitFitPlan plan(size_t budget, int max_resolution = 64) const
     {
-        return plan_kit_fit(
-            mesh, 1, [this](const Vec3& p) { return inside.is_inside(p); }, probe_of(projector), budget,
-            max_resolution);
+        return plan_kit_fit(mesh, 1, is_inside(), probe_of(projector), budget, max_resolution);
     }
 };
 
@@ -38,12 +33,7 @@ TEST(KitFitPlan, LargestResolutionWithinTheBudgetKeepingTheHole)
     EXPECT_EQ(plan.target_nodes, std::min<size_t>(150, plan.z0_nodes));
     EXPECT_GT(plan.size_cm, 0.0);
     // One cell finer is over the budget, or loses the hole.
-    InitialModelOptions o;
-    o.resolution = plan.resolution + 1;
-    o.target_genus = 1;
-    o.surface_probe = probe_of(t.projector);
-    const InitialModel finer = build_initial_model(
-        t.mesh, [&](const Vec3& p) { return t.inside.is_inside(p); }, o);
+    const InitialModel finer = t.z0(plan.resolution + 1);
     EXPECT_TRUE(finer.model.nodes.size() > 180 || finer.report.topology.genus != 1);
     EXPECT_NE(plan.message.find("cells"), std::string::npos);
 }
