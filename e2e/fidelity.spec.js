@@ -1,5 +1,5 @@
 // After a run the page says how close the model is to the mesh and whether its parts fit side by
-// side (core/score/fidelity, core/anneal/clearance_index): the same sentence `zomeify run` prints for
+// side (core/score/fidelity, core/anneal/rules/clearance_index): the same sentence `zomeify run` prints for
 // the same deterministic run (one thread, a seed and a proposal budget give the same model, and the
 // fidelity samples come from the project's own generator). A model with clashes, opened as a file,
 // says so too.

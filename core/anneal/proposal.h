@@ -22,7 +22,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "core/anneal/local_change.h"
+#include "core/anneal/energy/local_change.h"
 #include "core/anneal/node_claims.h"
 #include "core/anneal/random.h"
 #include "core/mesh/zome_mesh.h"

@@ -12,8 +12,8 @@
 
 #include <unistd.h>
 
+#include "core/assembly/real_size.h"
 #include "core/base/errors.h"
-#include "core/build/real_size.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
 #include "core/cli/model_input.h"

@@ -3,10 +3,10 @@
 #include <filesystem>
 #include <iostream>
 
+#include "core/assembly/assembly_plan.h"
+#include "core/assembly/plan_report.h"
+#include "core/assembly/steps_html.h"
 #include "core/base/errors.h"
-#include "core/build/assembly_plan.h"
-#include "core/build/plan_report.h"
-#include "core/build/steps_html.h"
 #include "core/cli/args.h"
 #include "core/cli/commands.h"
 #include "core/cli/model_input.h"

@@ -2,7 +2,7 @@
 
 #include <iostream>
 
-#include "core/anneal/clearance_index.h"
+#include "core/anneal/rules/clearance_index.h"
 #include "core/io/model_io.h"
 
 namespace zomeify::cli {

@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "core/build/real_size.h"
+#include "core/assembly/real_size.h"
 #include "core/pipeline/pipeline.h"
 
 namespace zomeify::cli {

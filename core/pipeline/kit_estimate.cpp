@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "core/anneal/energy/surface_context.h"
 #include "core/anneal/engine/annealer.h"
-#include "core/anneal/surface_context.h"
 #include "core/base/stopwatch.h"
 
 namespace zomeify {

@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "core/anneal/clearance_index.h"
 #include "core/anneal/engine/annealer.h"
+#include "core/anneal/rules/clearance_index.h"
 #include "core/geom/triangle_mesh.h"
 #include "core/pipeline/continue_from.h"
 #include "core/pipeline/kit_estimate.h"

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "core/anneal/energy_options.h"
+#include "core/anneal/energy/energy_options.h"
 #include "core/pipeline/pipeline.h"
 
 namespace zomeify {
@@ -33,7 +33,7 @@ struct RunSettings
     int threads = 0;            //!< annealing threads; 0 = automatic (each front end's rule)
     uint64_t seed = 1;
     bool initial_only = false; //!< stop after Z0
-    //! > 0: the built longest side in cm (core/build/real_size.h) instead of the resolution; the
+    //! > 0: the built longest side in cm (core/assembly/real_size.h) instead of the resolution; the
     //! front end that holds the mesh turns it into b1 (the CLI's --size-cm, the page's size field).
     double size_cm = 0.0;
     //! Continue from the model on screen instead of Z0 (the page's Improve, Fewer balls, More

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/anneal/surface_context.h"
+#include "core/anneal/energy/surface_context.h"
 #include "core/mesh/zome_mesh.h"
 
 namespace zomeify {

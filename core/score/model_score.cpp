@@ -5,8 +5,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/anneal/energy.h"
-#include "core/anneal/surface_context.h"
+#include "core/anneal/energy/energy.h"
+#include "core/anneal/energy/surface_context.h"
 #include "core/base/errors.h"
 #include "core/mesh/element_ranges.h"
 #include "core/mesh/model_convert.h"

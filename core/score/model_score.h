@@ -7,9 +7,9 @@
 #include <array>
 #include <string>
 
-#include "core/anneal/clearance_index.h"
-#include "core/anneal/energy_options.h"
-#include "core/anneal/energy_sums.h"
+#include "core/anneal/energy/energy_options.h"
+#include "core/anneal/energy/energy_sums.h"
+#include "core/anneal/rules/clearance_index.h"
 #include "core/geom/closest_point.h"
 #include "core/score/fidelity.h"
 #include "core/score/fold_over_report.h"

@@ -14,12 +14,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/anneal/energy_state.h"
+#include "core/anneal/energy/energy_state.h"
 #include "core/geom/inside.h"
 #include "core/mesh/model_convert.h"
 #include "core/surface/prepare.h"
 #include "core/voxel/initial_model.h"
-#include "tests/anneal/energy_edits.h"
+#include "tests/anneal/energy/energy_edits.h"
 #include "tests/bench/bench_util.h"
 
 using namespace zomeify;

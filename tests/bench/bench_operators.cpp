@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "core/anneal/energy_state.h"
+#include "core/anneal/energy/energy_state.h"
 #include "core/anneal/operators/operators.h"
 #include "core/mesh/model_convert.h"
 #include "tests/anneal/operators/operator_test_support.h"

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include "core/anneal/energy/surface_context.h"
 #include "core/anneal/engine/annealer.h"
-#include "core/anneal/surface_context.h"
 #include "core/geom/inside.h"
 #include "core/parts/kit_fit.h"
 #include "core/pipeline/pipeline.h"

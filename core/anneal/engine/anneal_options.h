@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <optional>
 
-#include "core/anneal/coverage_guard.h"
-#include "core/anneal/energy_options.h"
+#include "core/anneal/energy/energy_options.h"
+#include "core/anneal/rules/coverage_guard.h"
 #include "core/zome/slots.h"
 
 namespace zomeify {

@@ -5,7 +5,7 @@
 #include <array>
 #include <cstdint>
 
-#include "core/anneal/energy_sums.h"
+#include "core/anneal/energy/energy_sums.h"
 #include "core/anneal/proposal.h"
 
 namespace zomeify {

@@ -22,10 +22,10 @@
 #include <functional>
 #include <memory>
 
-#include "core/anneal/energy.h"
+#include "core/anneal/energy/energy.h"
+#include "core/anneal/energy/surface_context.h"
 #include "core/anneal/engine/anneal_options.h"
 #include "core/anneal/engine/anneal_stats.h"
-#include "core/anneal/surface_context.h"
 #include "core/mesh/zome_mesh.h"
 #include "core/zome/model.h"
 

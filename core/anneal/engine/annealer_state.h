@@ -9,8 +9,8 @@
 #include <optional>
 #include <string>
 
-#include "core/anneal/clearance_index.h"
-#include "core/anneal/energy_state.h"
+#include "core/anneal/energy/energy_state.h"
+#include "core/anneal/energy/surface_context.h"
 #include "core/anneal/engine/anneal_options.h"
 #include "core/anneal/engine/anneal_stats.h"
 #include "core/anneal/engine/part_tally.h"
@@ -18,7 +18,7 @@
 #include "core/anneal/engine/schedule.h"
 #include "core/anneal/engine/seed_slabs.h"
 #include "core/anneal/node_claims.h"
-#include "core/anneal/surface_context.h"
+#include "core/anneal/rules/clearance_index.h"
 #include "core/base/spin_lock.h"
 #include "core/base/stopwatch.h"
 #include "core/mesh/zome_mesh.h"

@@ -5,8 +5,8 @@
 //! add only struts and faces with at least one node inside it, so every node outside keeps its
 //! exact position and the struts and faces among such nodes stay as they were.
 
+#include "core/anneal/energy/local_change.h"
 #include "core/anneal/engine/anneal_options.h"
-#include "core/anneal/local_change.h"
 #include "core/mesh/zome_mesh.h"
 
 namespace zomeify {

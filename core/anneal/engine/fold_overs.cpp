@@ -1,6 +1,6 @@
 #include "core/anneal/engine/fold_overs.h"
 
-#include "core/anneal/element_energy.h"
+#include "core/anneal/energy/element_energy.h"
 #include "core/mesh/element_ranges.h"
 
 namespace zomeify {

@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "core/anneal/surface_context.h"
+#include "core/anneal/energy/surface_context.h"
 #include "core/mesh/zome_mesh.h"
 
 namespace zomeify {

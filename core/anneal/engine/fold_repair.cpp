@@ -4,7 +4,7 @@
 #include <mutex>
 #include <vector>
 
-#include "core/anneal/element_energy.h"
+#include "core/anneal/energy/element_energy.h"
 #include "core/anneal/engine/annealer_state.h"
 #include "core/anneal/engine/schedule.h"
 #include "core/anneal/proposal.h"

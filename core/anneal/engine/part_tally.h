@@ -9,8 +9,8 @@
 #include <array>
 #include <cstdint>
 
+#include "core/anneal/energy/local_change.h"
 #include "core/anneal/engine/anneal_options.h"
-#include "core/anneal/local_change.h"
 #include "core/mesh/zome_mesh.h"
 
 namespace zomeify {

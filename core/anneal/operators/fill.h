@@ -16,8 +16,8 @@
 #include <array>
 #include <cstdint>
 
+#include "core/anneal/energy/local_change.h"
 #include "core/anneal/fixed_list.h"
-#include "core/anneal/local_change.h"
 #include "core/anneal/node_claims.h"
 #include "core/anneal/proposal.h"
 #include "core/mesh/zome_mesh.h"

@@ -5,7 +5,7 @@
 #include <memory>
 #include <string>
 
-#include "core/anneal/surface_context.h"
+#include "core/anneal/energy/surface_context.h"
 #include "core/geom/closest_point.h"
 #include "core/geom/triangle_mesh.h"
 #include "core/zome/model.h"

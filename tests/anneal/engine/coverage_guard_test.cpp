@@ -6,9 +6,9 @@
 
 #include <gtest/gtest.h>
 
-#include "core/anneal/coverage_guard.h"
 #include "core/anneal/engine/annealer.h"
 #include "core/anneal/proposal.h"
+#include "core/anneal/rules/coverage_guard.h"
 #include "core/mesh/element_ranges.h"
 #include "core/mesh/model_convert.h"
 #include "tests/anneal/engine/anneal_scene.h"

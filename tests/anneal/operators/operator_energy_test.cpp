@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/anneal/energy_state.h"
+#include "core/anneal/energy/energy_state.h"
 #include "core/mesh/model_convert.h"
 #include "core/mesh/validate.h"
 #include "tests/anneal/operators/operator_test_support.h"

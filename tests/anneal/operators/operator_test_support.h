@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
+#include "core/anneal/energy/surface_context.h"
 #include "core/anneal/proposal.h"
-#include "core/anneal/surface_context.h"
 #include "core/geom/closest_point.h"
 #include "core/mesh/zome_mesh.h"
 #include "core/zome/model.h"
