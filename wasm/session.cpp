@@ -5,12 +5,12 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
+#include "core/assembly/assembly_plan.h"
+#include "core/assembly/plan_report.h"
+#include "core/assembly/real_size.h"
+#include "core/assembly/steps_html.h"
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
-#include "core/build/assembly_plan.h"
-#include "core/build/plan_report.h"
-#include "core/build/real_size.h"
-#include "core/build/steps_html.h"
 #include "core/geom/closest_point.h"
 #include "core/geom/inside.h"
 #include "core/io/model_io.h"

@@ -44,7 +44,7 @@ public:
     //! Z0 at `resolution` cells without keeping it: {nodes, struts, genus, surface_genus, kept,
     //! advice, size_mm, kits}. Used by the page's live estimate.
     std::string estimate(int resolution, double target = 0);
-    //! Z0 for a built longest side of `size_cm` (core/build/real_size.h, as `run --size-cm`):
+    //! Z0 for a built longest side of `size_cm` (core/assembly/real_size.h, as `run --size-cm`):
     //! estimate()'s fields plus {size_cm, b1}; a clear error for a size out of range.
     std::string estimate_size(double size_cm, double target = 0);
     //! Whether a typical model of `balls` balls fits the kits in `have` ("creator3, 2x basic", as

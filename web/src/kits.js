@@ -10,7 +10,7 @@ export const KITS = [
   { id: 'workshop', name: 'Workshop' },
 ];
 export const MAX_KITS = 99;
-// The sizes the core accepts (core/build/real_size.cpp: 3 to 256 b1 struts along the longest side).
+// The sizes the core accepts (core/assembly/real_size.cpp: 3 to 256 b1 struts along the longest side).
 export const SIZE_CM = { min: 25, max: 1900 };
 
 /**

@@ -19,7 +19,7 @@ export const Request = Object.freeze({
   SNAPSHOT: 'snapshot',   // {}                              → Snapshot
   SURFACE: 'surface',     // {}                              → {positions, triangles} | null
   PARTS: 'parts',         // {have?}                         → parts report (+ missing with the kits in have) (see core/parts/parts_report.h)
-  BUILD_PLAN: 'buildPlan', // {up}                          → plan (core/build/plan_report.h plan_json) + {html}
+  BUILD_PLAN: 'buildPlan', // {up}                          → plan (core/assembly/plan_report.h plan_json) + {html}
   EXPORT: 'export',       // {name, options?: {vefFaces, objUnits}} → {name, bytes: Uint8Array}
   LINK: 'link',           // {}                              → {link: 'm=2.…'}
   SUMMARY: 'summary',     // {}                              → Summary
