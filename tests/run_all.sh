@@ -69,6 +69,7 @@ bash tests/build.sh native || { echo "tests: 0 passed, 1 failed"; exit 1; }
 # The tests labelled parallel (suites *Parallel, tests/CMakeLists.txt) rerun the multi-threaded tests for the TSan lane;
 # the other lanes already run each of them once.
 run_ctest build/native -LE parallel
+command -v blender >/dev/null 2>&1 || echo "blender_colours_native: skipped: Blender not installed (tests/README.md)"
 lane_done native
 if ! skip ZOME_SKIP_WASM; then
   bash tests/build.sh wasm || { echo "tests: $total_pass passed, $((total_fail + 1)) failed"; exit 1; }

@@ -29,11 +29,10 @@ SimpleMesh make_cylinder(float radius, float length, int sides);
 //! vertex is used (2 + (stacks − 1)·slices vertices).
 SimpleMesh make_sphere(float radius, int slices, int stacks);
 
-//! sRGB colour (0..1) of a strut colour and of the white balls: what OBJ's `Kd` holds (three.js's
-//! MTLLoader and Blender read `Kd` as sRGB).
+//! sRGB colour (0..1) of a strut colour and of the white balls: the colour as a screen shows it.
 std::array<float, 3> zome_color_srgb(Color c);
 std::array<float, 3> ball_color_srgb();
-//! The same in linear RGB: what glTF's baseColorFactor holds.
+//! The same in linear RGB: what glTF's baseColorFactor and OBJ's `Kd` hold (Blender reads `Kd` as linear).
 std::array<float, 3> zome_color_linear(Color c);
 std::array<float, 3> ball_color_linear();
 

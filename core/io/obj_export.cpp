@@ -56,11 +56,11 @@ void emit(std::ostringstream& out, size_t& vertex_base, const ObjTemplate& t, co
     vertex_base += t.positions.size();
 }
 
-void material(std::ostringstream& mtl, const std::string& name, const std::array<float, 3>& srgb)
+void material(std::ostringstream& mtl, const std::string& name, const std::array<float, 3>& linear_rgb)
 {
     char kd[64];
-    std::snprintf(kd, sizeof kd, "Kd %.4f %.4f %.4f\n", static_cast<double>(srgb[0]), static_cast<double>(srgb[1]),
-                  static_cast<double>(srgb[2]));
+    std::snprintf(kd, sizeof kd, "Kd %.4f %.4f %.4f\n", static_cast<double>(linear_rgb[0]),
+                  static_cast<double>(linear_rgb[1]), static_cast<double>(linear_rgb[2]));
     mtl << "newmtl " << name << "\n" << kd << "Ka 0 0 0\nKs 0.2 0.2 0.2\nNs 40\nd 1\nillum 2\n\n";
 }
 
@@ -89,14 +89,16 @@ ObjExport write_obj(const ZomeModel& model, const std::string& mtl_name, ObjUnit
     obj << "# units: " << (metres ? "metres (m)" : "millimetres (mm); import at scale 0.001 for metres") << "\n"
         << size;
     obj << "mtllib " << mtl_name << "\n";
-    mtl << "# zomeify: Zome colours; Kd in sRGB\n\n";
+    // Kd linear (issue 42): Blender takes Kd as its linear base colour, so it shows the GLB's colours.
+    mtl << "# zomeify: Zome colours; Kd in linear RGB, as Blender reads it (the same numbers as the GLB's\n"
+           "# baseColorFactor); three.js's MTLLoader reads Kd as sRGB and shows these darker\n\n";
     size_t base = 0;
 
     const ObjTemplate ball = welded(make_sphere(static_cast<float>(kBallDiameterMm / 2), 12, 8));
     obj << "o balls\nusemtl ball_white\n";
     for (const auto& c : geo.ball_centres)
         emit(obj, base, ball, Placement{c, {0, 0, 0, 1}}, unit);
-    material(mtl, "ball_white", ball_color_srgb());
+    material(mtl, "ball_white", ball_color_linear());
 
     bool color_written[3] = {false, false, false};
     for (int k = 0; k < kStrutKindCount; ++k)
@@ -113,7 +115,7 @@ ObjExport write_obj(const ZomeModel& model, const std::string& mtl_name, ObjUnit
         const auto c = static_cast<size_t>(kind_color(info.kind));
         if (!color_written[c])
         {
-            material(mtl, mat, zome_color_srgb(kind_color(info.kind)));
+            material(mtl, mat, zome_color_linear(kind_color(info.kind)));
             color_written[c] = true;
         }
     }

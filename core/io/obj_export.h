@@ -4,7 +4,8 @@
 //! centred in x and z, resting on y = 0, y up) with an MTL of the Zome colours. Millimetres by
 //! default (a maker's unit; the header comment says so), metres on request. OBJ has no
 //! instancing, so every part is written out; every vertex written is used by a face. `Kd` is
-//! sRGB, as three.js's MTLLoader and Blender read it.
+//! linear RGB, the GLB's baseColorFactor, as Blender reads it (issue 42: there the OBJ and the GLB look
+//! alike); three.js's MTLLoader reads `Kd` as sRGB, so there the OBJ looks darker than the GLB.
 
 #include <string>
 
