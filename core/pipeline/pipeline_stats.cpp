@@ -75,6 +75,8 @@ nlohmann::json anneal_json(const AnnealResult& a)
             {"dead_seeds", s.dead_seeds},
             {"lost_races", s.lost_races},
             {"redecisions", s.redecisions},
+            {"commit_hold_seconds", s.commit_hold_seconds},
+            {"commit_wait_seconds", s.commit_wait_seconds},
             {"fold_over_repair",
              {{"before", s.fold_overs_before_repair},
               {"after", s.fold_overs_after_repair},

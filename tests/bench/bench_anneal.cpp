@@ -90,22 +90,28 @@ nlohmann::json throughput(const Scene& s, double seconds)
         const AnnealResult r = annealer.run();
         const double cpu = cpu_seconds() - cpu0;
         const AnnealStats& st = r.stats;
-        runs.push_back({{"threads", threads},
-                        {"wall_seconds", st.wall_seconds},
-                        {"cpu_seconds", cpu},
-                        {"proposals", st.proposals},
-                        {"commits", st.commits},
-                        {"proposals_per_second", st.proposals_per_second},
-                        {"commits_per_second", st.commits_per_second},
-                        {"proposals_per_cpu_second", cpu > 0 ? static_cast<double>(st.proposals) / cpu : 0.0},
-                        {"busy_seeds", st.busy_seeds},
-                        {"dead_seeds", st.dead_seeds},
-                        {"lost_races", st.lost_races},
-                        {"pauses", st.garbage_collections},
-                        {"energy_start", r.start.total},
-                        {"energy_end", r.end.total},
-                        {"nodes_end", r.model.nodes.size()},
-                        {"energy_consistent", st.energy_consistent}});
+        runs.push_back(
+            {{"threads", threads},
+             {"wall_seconds", st.wall_seconds},
+             {"cpu_seconds", cpu},
+             {"proposals", st.proposals},
+             {"commits", st.commits},
+             {"proposals_per_second", st.proposals_per_second},
+             {"commits_per_second", st.commits_per_second},
+             {"proposals_per_cpu_second", cpu > 0 ? static_cast<double>(st.proposals) / cpu : 0.0},
+             {"busy_seeds", st.busy_seeds},
+             {"dead_seeds", st.dead_seeds},
+             {"lost_races", st.lost_races},
+             {"pauses", st.garbage_collections},
+             {"redecisions", st.redecisions},
+             {"commit_hold_seconds", st.commit_hold_seconds},
+             {"commit_wait_seconds", st.commit_wait_seconds},
+             // The serial fraction: the commit section's share of the threads' time.
+             {"serial_fraction", st.wall_seconds > 0 ? st.commit_hold_seconds / (threads * st.wall_seconds) : 0.0},
+             {"energy_start", r.start.total},
+             {"energy_end", r.end.total},
+             {"nodes_end", r.model.nodes.size()},
+             {"energy_consistent", st.energy_consistent}});
     }
     const double one = runs[0]["proposals_per_second"].get<double>();
     for (auto& run : runs)

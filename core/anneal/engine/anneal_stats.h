@@ -53,6 +53,10 @@ struct AnnealStats
     //! another thread committed in between.
     uint64_t redecisions = 0;
     uint64_t garbage_collections = 0; //!< synchronized pauses to compact and grow the mesh
+    //! Seconds the threads spent in the commit section (holding the commit lock exclusively, so no
+    //! other thread could decide or commit meanwhile) and waiting to enter it, summed over threads:
+    //! the serial part of a run (engine README, "Many cores").
+    double commit_hold_seconds = 0.0, commit_wait_seconds = 0.0;
     //! The coverage guard (coverage_guard.h): its radius (0: off), samples on S, and how many of
     //! them had no node within the radius at the start and at the end.
     double coverage_radius = 0.0;

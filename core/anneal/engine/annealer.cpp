@@ -120,6 +120,8 @@ void add_counts(AnnealStats& into, const AnnealStats& from)
     into.dead_seeds += from.dead_seeds;
     into.lost_races += from.lost_races;
     into.redecisions += from.redecisions;
+    into.commit_hold_seconds += from.commit_hold_seconds;
+    into.commit_wait_seconds += from.commit_wait_seconds;
 }
 
 } // namespace
