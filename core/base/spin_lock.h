@@ -5,7 +5,12 @@
 //! no futex wake-up (a std::mutex for the annealer's commits spent ~5% of two threads' time in
 //! the kernel, tests/bench/README.md). Waiters spin on a load (no writes while the line is held)
 //! and yield to the scheduler after `SpinsBeforeYield` rounds, so a holder preempted on an
-//! oversubscribed machine is not starved. Satisfy Lockable (std::lock_guard works).
+//! oversubscribed machine is not starved. In wasm the yield does nothing (Emscripten's sched_yield
+//! only runs the thread's queued calls), so there waiters spin. Sleeping instead (a 50 µs futex
+//! wait, 2026-12-07) was tried under node, 10 s runs of the bunny: after 2048 rounds two threads
+//! made 0.68× the proposals of one (each reader waiting out a commit slept 10× its length); after
+//! 65,536 rounds 1.33×, as spinning (1.32×), and in the page two threads gained 1.17× either way;
+//! not kept. Satisfy Lockable (std::lock_guard works).
 //!   SpinLock:   a few dozen nanoseconds held (a hash-table probe)
 //!   CommitLock: up to a few microseconds held (the annealer's commit section), exclusively, or
 //!               shared by readers (lock_shared) that only read what commits write
