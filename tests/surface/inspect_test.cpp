@@ -147,6 +147,25 @@ TEST(InspectCli, AutomaticGridIsTheOneRunTakes)
     }
 }
 
+TEST(InspectCli, MirrorPlaneOfASymmetricAndALopsidedShape)
+{
+    // issue 41: the best mirror plane and how far the mirror image lies, in mm at the automatic size.
+    ZOME_REQUIRE_SHARED();
+    const CliResult torus = run_cli("inspect '" + test::shared_path("data/meshes/torus.obj") + "' --json");
+    ASSERT_EQ(torus.status, 0) << torus.err;
+    const auto t = nlohmann::json::parse(torus.out)["mirror_plane"];
+    EXPECT_LT(t["rms_mm"].get<double>(), 0.5);
+    EXPECT_LT(t["max_mm"].get<double>(), 1.0);
+    EXPECT_NEAR(t["at_size_cm"].get<double>(),
+                nlohmann::json::parse(torus.out)["automatic_resolution"]["size_cm"].get<double>(), 1e-9);
+    const CliResult bunny = run_cli("inspect '" + test::shared_path("data/meshes/bunny.obj") + "'");
+    ASSERT_EQ(bunny.status, 0) << bunny.err;
+    const size_t at = bunny.out.find("mirror plane    normal (");
+    ASSERT_NE(at, std::string::npos) << bunny.out;
+    const CliResult bunny_json = run_cli("inspect '" + test::shared_path("data/meshes/bunny.obj") + "' --json");
+    EXPECT_GT(nlohmann::json::parse(bunny_json.out)["mirror_plane"]["rms_mm"].get<double>(), 10.0);
+}
+
 TEST(InspectCli, Table)
 {
     ZOME_REQUIRE_SHARED();
