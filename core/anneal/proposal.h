@@ -67,9 +67,10 @@ enum class Rejection : uint8_t
     StrutsTooClose,   //!< two struts sharing no ball (a bow-tie quad among them)
     StrutThroughFace, //!< a strut through a face it shares no ball with
     OverKits,         //!< (at commit) a part count over the run's limits (part_tally.h)
-    OutsideRegion     //!< (at commit) a change outside the region the run may change (change_region.h)
+    OutsideRegion,    //!< (at commit) a change outside the region the run may change (change_region.h)
+    MirrorOverlap     //!< a change across the mirror plane that is not its own mirror image (mirrored.h)
 };
-inline constexpr int kRejectionKinds = 20;
+inline constexpr int kRejectionKinds = 21;
 std::string_view rejection_name(Rejection r) noexcept;
 
 struct Proposal

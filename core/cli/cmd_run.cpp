@@ -104,6 +104,12 @@ RunSettings run_settings(const Args& args)
     s.threads = static_cast<int>(setting(args, "threads", s.threads));
     s.seed = static_cast<uint64_t>(setting(args, "seed", static_cast<double>(s.seed)));
     s.initial_only = args.has("--initial-only");
+    if (const std::optional<std::string> mirror = args.value("--mirror"))
+    {
+        if (*mirror != "auto" && *mirror != "off")
+            throw InvalidInputError("--mirror wants auto or off, got '" + *mirror + "'");
+        s.mirror = *mirror == "auto" ? MirrorMode::Auto : MirrorMode::Off;
+    }
     s.energy.w_distance = setting(args, "weights.dist", s.energy.w_distance);
     s.energy.w_orientation = setting(args, "weights.orient", s.energy.w_orientation);
     s.energy.w_fairing = setting(args, "weights.fair", s.energy.w_fairing);
@@ -242,6 +248,15 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
         else if (r.kept_start)
             s << " No model found had a lower energy than the one continued, so it is kept as it was.";
     }
+    if (r.mirror)
+    {
+        s << " " << r.mirror->message;
+        if (r.mirror->used && r.anneal)
+            s << (r.mirror_mismatch.symmetric()
+                      ? " Every change was made with its mirror image: the model maps onto itself."
+                      : " The model does NOT map onto itself: " + std::to_string(r.mirror_mismatch.balls) +
+                            " balls and " + std::to_string(r.mirror_mismatch.struts) + " struts have no mirror image.");
+    }
     s << " Wrote";
     for (const std::string& out : outputs)
         s << " " << out;
@@ -285,6 +300,7 @@ int cmd_run(const CommandArgs& argv)
                      "--from",
                      "--near",
                      "--radius",
+                     "--mirror",
                      kObjUnitsOption},
                     {"--initial-only", "--fit-kits", "--within-estimate", "--paper-energy", "--no-clearance",
                      "--allow-fold-overs", "--thicken", kNoFacesFlag});

@@ -41,6 +41,38 @@ void check_model(PipelineResult& r, const SurfaceContext& context, const EnergyO
     r.model_energy = evaluate_energy(mesh, context, o);
 }
 
+// A mirror-symmetric Z0 (mirror_choice.h) in r.initial, with anneal.mirror set, when the shape is
+// symmetric and such a Z0 keeps the shape's genus; otherwise r.mirror says why not.
+void build_mirrored_z0(PipelineResult& r, const TriangleMesh& surface, const SurfaceProjector& projector,
+                       const InsidePredicate& is_inside, const InitialModelOptions& z0_options, AnnealOptions& anneal)
+{
+    const auto [lo, hi] = bounding_box(surface);
+    const double cell = z0_options.b1 > 0.0 ? z0_options.b1 : (hi - lo).maxCoeff() / z0_options.resolution;
+    r.mirror = choose_mirror(projector, cell / kPhi);
+    if (!r.mirror->symmetric)
+        return;
+    InitialModelOptions o = z0_options;
+    o.mirror = r.mirror->along;
+    InitialModel z0 = build_initial_model(surface, is_inside, o);
+    const std::optional<int> corner = mirror_corner_index(z0.report.grid, *o.mirror);
+    const bool kept = z0.report.valid && z0.report.topology.genus == r.surface_genus &&
+                      z0.report.topology.components == 1 && corner && validate(from_model(z0.model)).ok();
+    if (kept)
+    {
+        const LatticeMirror lattice{o.mirror->axis, QPhi{0, 2 * static_cast<int64_t>(*corner)}};
+        if (mirror_mismatch(z0.model, lattice).symmetric())
+        {
+            r.initial = std::move(z0);
+            anneal.mirror = lattice;
+            r.mirror->used = lattice;
+            return;
+        }
+    }
+    r.mirror->symmetric = false;
+    r.mirror->message += " No mirror-symmetric start with the shape's genus was found at this size: the model is "
+                         "made without the mirror.";
+}
+
 // Z0 at the options' resolution (or the automatic one), checked, with its report in r.
 ZomeMesh build_z0(PipelineResult& r, const TriangleMesh& surface, const SurfaceProjector& projector,
                   const PipelineOptions& options, AnnealOptions& anneal)
@@ -57,7 +89,10 @@ ZomeMesh build_z0(PipelineResult& r, const TriangleMesh& surface, const SurfaceP
     // The automatic choice's ball target, unless the user set one (or a size: then Z0's count).
     if (r.automatic && anneal.target_nodes == 0)
         anneal.target_nodes = r.automatic->target_nodes;
-    r.initial = build_initial_model(surface, is_inside, z0_options);
+    if (options.mirror == MirrorMode::Auto)
+        build_mirrored_z0(r, surface, projector, is_inside, z0_options, anneal);
+    if (!anneal.mirror)
+        r.initial = build_initial_model(surface, is_inside, z0_options);
     r.initial_seconds = r.initial.report.seconds;
     const InitialModelReport& z0 = r.initial.report;
     if (!z0.valid)
@@ -205,6 +240,8 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
         (options.resolution < kMinResolution || options.resolution > kMaxResolution))
         throw InvalidInputError("the resolution must be between " + std::to_string(kMinResolution) + " and " +
                                 std::to_string(kMaxResolution) + " cells, or automatic");
+    if (options.mirror != MirrorMode::Off && options.from)
+        throw InvalidInputError("--mirror works on a new run, not with --from (a model is continued as it is)");
     if (options.fix && !options.from)
         throw InvalidInputError("fixing one spot needs a model to work on (--from MODEL)");
 
@@ -244,6 +281,8 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
             }
         }
     }
+    if (anneal.mirror)
+        r.mirror_mismatch = mirror_mismatch(r.model, *anneal.mirror);
     r.target_nodes = anneal.target_nodes ? anneal.target_nodes : r.initial.model.nodes.size();
     check_model(r, context, anneal.energy, r.target_nodes, options.fidelity_samples);
     r.seconds = clock.seconds();

@@ -14,6 +14,7 @@
 #include "core/geom/triangle_mesh.h"
 #include "core/pipeline/continue_from.h"
 #include "core/pipeline/kit_estimate.h"
+#include "core/pipeline/mirror_choice.h"
 #include "core/score/fidelity.h"
 #include "core/score/fold_over_report.h"
 #include "core/voxel/auto_resolution.h"
@@ -52,6 +53,9 @@ struct PipelineOptions
     //! With `from`: change only the model near this spot (`--near X,Y,Z --radius R`); the ball
     //! target defaults to fix_target().
     std::optional<FixSpot> fix;
+    //! Auto: a mirror-symmetric model when the shape is symmetric about a plane along a mesh axis
+    //! (mirror_choice.h). Not with `from`.
+    MirrorMode mirror = MirrorMode::Off;
     AnnealOptions anneal;
 };
 
@@ -80,8 +84,11 @@ struct PipelineResult
     bool kept_start = false;                 //!< continued, and no result had a lower energy: the model as it was
     std::optional<ChangeRegion> region;      //!< the spot a fix changed (model units)
     std::optional<FixSpot> fix_spot;         //!< the same in mesh units
-    double spot_gap_before = 0.0;            //!< a fix: the largest gap within the spot before (b0)
-    double spot_gap_after = 0.0;             //!< and after
+    std::optional<MirrorChoice> mirror;      //!< with MirrorMode::Auto: the plane, and whether it was used
+    //! With a mirror used: the model's balls and struts whose mirror image is not in it (0, 0).
+    MirrorMismatch mirror_mismatch;
+    double spot_gap_before = 0.0; //!< a fix: the largest gap within the spot before (b0)
+    double spot_gap_after = 0.0;  //!< and after
     //! The model to write: the best annealed model when the run was cancelled, the final one
     //! otherwise (Z0 with initial_only). Carries the transform and stats_json.
     ZomeModel model;

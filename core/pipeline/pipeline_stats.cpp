@@ -151,6 +151,14 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
                              {"typically", kits_text(plan_kits(r.kit_estimate->quick).kits)},
                              {"quick_pass_proposals", kQuickPassProposals},
                              {"seconds", r.kit_estimate->seconds}};
+    if (r.mirror)
+    {
+        j["mirror"] = nlohmann::json::parse(mirror_choice_json(*r.mirror));
+        if (r.mirror->used)
+            j["mirror"]["model"] = {{"balls_without_image", r.mirror_mismatch.balls},
+                                    {"struts_without_image", r.mirror_mismatch.struts},
+                                    {"symmetric", r.mirror_mismatch.symmetric()}};
+    }
     if (r.continued)
     {
         j["continued"] = {

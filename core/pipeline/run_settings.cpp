@@ -148,6 +148,13 @@ RunSettings run_settings_from_json(const std::string& json)
             throw InvalidInputError("run option 'continue' must be true or false");
         s.continue_model = j.at("continue").get<bool>();
     }
+    if (j.contains("mirror"))
+    {
+        const nlohmann::json& m = j.at("mirror");
+        if (!m.is_string() || (m.get<std::string>() != "auto" && m.get<std::string>() != "off"))
+            throw InvalidInputError("run option 'mirror' must be \"auto\" or \"off\"");
+        s.mirror = m.get<std::string>() == "auto" ? MirrorMode::Auto : MirrorMode::Off;
+    }
     if (j.contains("near"))
     {
         const nlohmann::json& p = j.at("near");
@@ -178,9 +185,16 @@ std::string run_settings_json(const RunSettings& s)
     nlohmann::json weights = nlohmann::json::object();
     for (const WeightField& f : kWeights)
         weights[f.name] = s.energy.*f.field;
-    const nlohmann::json j = {{"resolution", s.resolution},     {"seconds", s.seconds}, {"proposals", s.proposals},
-                              {"target_nodes", s.target_nodes}, {"threads", s.threads}, {"seed", s.seed},
-                              {"initial_only", s.initial_only}, {"size_cm", s.size_cm}, {"weights", weights}};
+    const nlohmann::json j = {{"resolution", s.resolution},
+                              {"seconds", s.seconds},
+                              {"proposals", s.proposals},
+                              {"target_nodes", s.target_nodes},
+                              {"threads", s.threads},
+                              {"seed", s.seed},
+                              {"initial_only", s.initial_only},
+                              {"size_cm", s.size_cm},
+                              {"weights", weights},
+                              {"mirror", s.mirror == MirrorMode::Auto ? "auto" : "off"}};
     return j.dump();
 }
 
@@ -209,6 +223,7 @@ PipelineOptions pipeline_options(const RunSettings& s)
     PipelineOptions o;
     o.resolution = s.resolution;
     o.initial_only = s.initial_only;
+    o.mirror = s.mirror;
     AnnealOptions& a = o.anneal;
     a.seconds = s.seconds;
     a.max_proposals = s.proposals;

@@ -44,6 +44,9 @@ struct RunSettings
     std::array<double, 3> near{};
     double radius = 0.0;
     EnergyOptions energy; //!< the energy's weights (energy_options.h)
+    //! Auto: a mirror-symmetric model when the shape is symmetric (mirror_choice.h; JSON "mirror":
+    //! "auto" | "off", the CLI's --mirror).
+    MirrorMode mirror = MirrorMode::Off;
 
     //! Throws InvalidInputError with a one-line message naming the first option out of bounds.
     void check() const;
@@ -64,9 +67,9 @@ const std::vector<OptionBounds>& run_option_bounds();
 const OptionBounds& option_bounds(const std::string& key);
 
 //! Reads a JSON object with any of the keys resolution, seconds, proposals, target_nodes, threads,
-//! seed, initial_only, size_cm, continue, near [x, y, z], radius, weights {dist, orient, fair, complex,
-//! surface, fold}; missing keys keep
-//! their defaults. Throws InvalidInputError for a wrong type or a value out of bounds.
+//! seed, initial_only, size_cm, continue, near [x, y, z], radius, mirror ("auto" | "off"), weights {dist, orient, fair,
+//! complex, surface, fold}; missing keys keep their defaults. Throws InvalidInputError for a wrong type or a value out
+//! of bounds.
 RunSettings run_settings_from_json(const std::string& json);
 
 //! The settings as that JSON (resolution 0 = automatic).

@@ -15,6 +15,8 @@ GridLayoutOptions nudged_layout(const InitialModelOptions& options, int attempt)
     GridLayoutOptions layout;
     layout.resolution = options.resolution;
     layout.b1 = options.b1;
+    layout.boundary_axis = options.mirror ? options.mirror->axis : -1;
+    layout.boundary_at = options.mirror ? options.mirror->at : 0.0;
     if (attempt == 0)
         return layout;
     // Alternate smaller and larger cells (1%, 1%, 2%, 2%, ...) so the resolution stays close to the
@@ -41,6 +43,16 @@ std::string describe(const GridSpec& grid, const GridLayoutOptions& layout)
     return os.str();
 }
 
+// The boundary of a cell set, made mirror-symmetric first when the options ask for it.
+Extraction extract_cells(const VoxelGrid& cells, const InitialModelOptions& options)
+{
+    if (!options.mirror)
+        return extract_boundary(cells);
+    VoxelGrid symmetric = cells;
+    make_mirror_symmetric(symmetric, *options.mirror);
+    return extract_boundary(symmetric);
+}
+
 // Carves the accepted grid and extracts Z0 again. Carving keeps the topology, so the genus is judged
 // on the plain grid and only the grid that is kept pays for the carving.
 void carve(VoxelGrid& grid, InitialModel& out, const InitialModelOptions& options, const InsidePredicate* inside)
@@ -50,7 +62,7 @@ void carve(VoxelGrid& grid, InitialModel& out, const InitialModelOptions& option
     InitialModelReport& rep = out.report;
     rep.carve = carve_outside_cells(grid, *inside, options.surface_probe);
     rep.voxels = grid.occupied_count();
-    Extraction ex = extract_boundary(grid);
+    Extraction ex = extract_cells(grid, options);
     out.model = std::move(ex.model);
     rep.topology = ex.topology;
 }
@@ -93,7 +105,7 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
         rep.carve = {};
         rep.carve_topology = CarveTopology::Keep;
         rep.centre_sampled = false;
-        Extraction ex = extract_boundary(grid);
+        Extraction ex = extract_cells(grid, options);
         out.model = std::move(ex.model);
         rep.topology = ex.topology;
         if (options.target_genus < 0 || rep.topology.genus == options.target_genus)
@@ -106,7 +118,7 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
         note << describe(rep.grid, rep.layout) << ": genus " << rep.topology.genus << ", not " << options.target_genus;
         // Another cell set of this grid: taken when it has the genus of S in one component, else noted.
         const auto reaches_genus = [&](const VoxelGrid& cells, bool manifold, const char* how) {
-            Extraction x = extract_boundary(cells);
+            Extraction x = extract_cells(cells, options);
             if (manifold && x.topology.genus == options.target_genus && x.topology.components == 1)
             {
                 first_valid.reset();
@@ -175,7 +187,7 @@ InitialModel build_initial_model(const std::array<Vec3, 2>& bbox, const VoxelSou
     }
     else if (!rep.valid)
     {
-        Extraction ex = extract_boundary(grid);
+        Extraction ex = extract_cells(grid, options);
         out.model = std::move(ex.model);
         rep.topology = ex.topology;
     }
@@ -191,7 +203,15 @@ InitialModel build_initial_model(const TriangleMesh& surface, const InsidePredic
         stats.emplace_back();
         return voxelize(surface, spec, inside, &stats.back());
     };
-    InitialModel out = build_initial_model(bounding_box(surface), source, options, &inside);
+    std::array<Vec3, 2> box = bounding_box(surface);
+    if (options.mirror) // symmetric about the plane, so every cell's mirror image lies in the grid
+    {
+        const int a = options.mirror->axis;
+        const double half = std::max(options.mirror->at - box[0][a], box[1][a] - options.mirror->at);
+        box[0][a] = options.mirror->at - half;
+        box[1][a] = options.mirror->at + half;
+    }
+    InitialModel out = build_initial_model(box, source, options, &inside);
     out.report.voxelize = stats.at(static_cast<size_t>(out.report.attempt_used));
     return out;
 }

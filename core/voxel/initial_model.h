@@ -6,12 +6,14 @@
 //! size and offset) and the whole thing retried, a bounded number of times.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/voxel/carve.h"
 #include "core/voxel/centre_sampled.h"
 #include "core/voxel/extract.h"
+#include "core/voxel/mirror_cells.h"
 #include "core/voxel/repair.h"
 #include "core/voxel/voxel_grid.h"
 #include "core/voxel/voxelize.h"
@@ -45,6 +47,10 @@ struct InitialModelOptions
     //! When a grid misses target_genus carved either way, try its centre-sampled cells (centre_sampled.h:
     //! the gaps and holes of S wherever a cell fits through them) before nudging.
     bool centre_sampling = true;
+    //! Set: every grid has a layer of cell boundaries on this plane, and its cells are made
+    //! symmetric about it (mirror_cells.h) before each boundary is extracted, so Z0 is exactly
+    //! mirror-symmetric. The bounding box should be symmetric about the plane.
+    std::optional<AxisPlane> mirror;
 };
 
 //! What happened, for the CLI's summary and --stats.

@@ -36,7 +36,9 @@ GridSpec layout_grid(const Vec3& lo, const Vec3& hi, const GridLayoutOptions& op
         if (ratio > 1e8)
             throw InvalidInputError("voxel grid: too many cells (b1 too small for this surface)");
         const double nominal = std::max(1.0, std::ceil(ratio - 1e-9));
-        const double start = 0.5 * (lo[a] + hi[a]) - 0.5 * nominal * cell + options.offset[a] * cell;
+        double start = 0.5 * (lo[a] + hi[a]) - 0.5 * nominal * cell + options.offset[a] * cell;
+        if (a == options.boundary_axis) // the nearest start with a boundary at boundary_at
+            start = options.boundary_at - std::round((options.boundary_at - start) / cell) * cell;
         // Cover [lo, hi] from `start` (an offset may push the box past the nominal block), then add
         // one empty layer on each side: a cell that only touches the box still lies in the grid.
         const double first = std::floor((lo[a] - start) / cell + 1e-9);

@@ -32,6 +32,10 @@ struct GridLayoutOptions
     double scale_factor = 1.0;
     //! Shifts the grid by this fraction of a cell per axis (each in (-1, 1); retries use it).
     std::array<double, 3> offset{0.0, 0.0, 0.0};
+    //! 0–2: a layer of cell boundaries lies at `boundary_at` on that axis (a mirror plane; the
+    //! offset on that axis is then unused). -1: none.
+    int boundary_axis = -1;
+    double boundary_at = 0.0;
 };
 
 //! The grid over the box [lo, hi]: centred on it (up to `offset`), with at least one empty layer of

@@ -174,6 +174,13 @@ expect_error "from other mesh" '^zomeify: the model to continue was not made for
 expect_error "near alone"      '--near and --radius fix one spot of a model: give it with --from MODEL' run "$shared/data/meshes/torus.obj" --near 0,0,0 --radius 1 -o "$tmp/x.zome.json"
 expect_error "near bad point"  "--near wants a point X,Y,Z in mesh units, got '1,2'" run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --near 1,2 --radius 1 -o "$tmp/x.zome.json"
 expect_error "from and size"   '--from continues a model at its own size' run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --resolution 9 -o "$tmp/x.zome.json"
+# --mirror auto: the torus is mirror-symmetric and its model maps onto itself; the bunny is not, and
+# is built as without the mirror; a bad value and --from are refused.
+expect_output "run mirror"      'Mirror-symmetric about [xyz] = .*Every change was made with its mirror image: the model maps onto itself\.' \
+  run "$shared/data/meshes/torus.obj" --mirror auto --proposals 100000 --threads 1 -o "$tmp/m.zome.json"
+expect_output "run mirror bunny" 'Not made mirror-symmetric' run "$mesh" --mirror auto --initial-only -o "$tmp/x.zome.json"
+expect_error "mirror value"     "--mirror wants auto or off, got 'on'" run "$mesh" --mirror on -o "$tmp/x.zome.json"
+expect_error "mirror from"      '--mirror works on a new run, not with --from' run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --mirror auto -o "$tmp/x.zome.json"
 expect_error "within and have" 'give --have KITS or --within-estimate' run "$shared/data/meshes/bunny.obj" --have basic --within-estimate -o "$tmp/x.zome.json"
 # --fit-kits with one Creator 3: a plan, then the result's own parts fit the kit or the output says
 # it does not and names the nearest smaller size expected to.

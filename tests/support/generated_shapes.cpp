@@ -216,6 +216,32 @@ GeneratedShape make_mug(double handle_cells)
     return finish("mug", std::move(mesh), 1, 2 * rh, ring - rh);
 }
 
+GeneratedShape make_car()
+{
+    // Rounded boxes (half sizes, rounding radius) for the body and the cabin; wheels are discs of
+    // radius 0.42 and half width 0.14 whose inner faces sink into the body.
+    const auto rounded_box = [](const Vec3& p, const Vec3& centre, const Vec3& half, double round) {
+        const Vec3 q = (p - centre).cwiseAbs() - (half - Vec3::Constant(round));
+        return q.cwiseMax(0.0).norm() + std::min(q.maxCoeff(), 0.0) - round;
+    };
+    const auto wheel = [](const Vec3& p, const Vec3& centre) {
+        const Vec3 q = p - centre; // axis z
+        const double radial = std::hypot(q.x(), q.y()) - 0.42, axial = std::abs(q.z()) - 0.14;
+        return std::hypot(std::max(radial, 0.0), std::max(axial, 0.0)) + std::min(std::max(radial, axial), 0.0);
+    };
+    const auto distance = [&](const Vec3& p) {
+        double d = rounded_box(p, Vec3(0, 0.8, 0), Vec3(2.0, 0.38, 0.85), 0.15);
+        d = std::min(d, rounded_box(p, Vec3(-0.25, 1.4, 0), Vec3(1.0, 0.32, 0.72), 0.2));
+        for (const double x : {-1.3, 1.3})
+            for (const double z : {-0.8, 0.8})
+                d = std::min(d, wheel(p, Vec3(x, 0.42, z)));
+        return d;
+    };
+    const Vec3 lo(-2.15, -0.15, -1.1), hi(2.15, 1.9, 1.1);
+    TriangleMesh mesh = polygonise(distance, lo, hi, 96);
+    return finish("car", std::move(mesh), 0, 0.28, 0.0);
+}
+
 const std::vector<GeneratedShape>& generated_shapes()
 {
     static const std::vector<GeneratedShape> shapes = {make_trefoil_tube(), make_double_torus(), make_mug()};

@@ -34,6 +34,10 @@ GeneratedShape make_double_torus();
 //! A mug (open cup) with a handle of diameter longest side / `handle_cells` (one cell at that grid).
 GeneratedShape make_mug(double handle_cells = 8.0);
 
+//! A car (issue 41): a body with a cabin and four wheels, mirror-symmetric about z = 0 (length
+//! along x, height along y); genus 0. Not in generated_shapes() (the tests over those do not need it).
+GeneratedShape make_car();
+
 //! The three, built once per process.
 const std::vector<GeneratedShape>& generated_shapes();
 

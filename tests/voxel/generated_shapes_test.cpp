@@ -102,9 +102,11 @@ TEST(GeneratedShapes, DISABLED_Z0GenusAtEveryGrid6To32)
 
 TEST(GeneratedShapes, DISABLED_WriteObj)
 {
-    // ZOME_SHAPES_DIR (default: the test scratch folder) gets trefoil.obj, double_torus.obj, mug.obj.
+    // ZOME_SHAPES_DIR (default: the test scratch folder) gets trefoil.obj, double_torus.obj, mug.obj, car.obj.
     const char* dir = std::getenv("ZOME_SHAPES_DIR");
-    for (const test::GeneratedShape& g : test::generated_shapes())
+    std::vector<test::GeneratedShape> shapes = test::generated_shapes();
+    shapes.push_back(test::make_car());
+    for (const test::GeneratedShape& g : shapes)
     {
         const std::string path = dir ? std::string(dir) + "/" + g.name + ".obj" : test::temp_path(g.name + ".obj");
         std::ofstream out(path);

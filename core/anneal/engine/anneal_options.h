@@ -9,6 +9,7 @@
 
 #include "core/anneal/energy/energy_options.h"
 #include "core/anneal/rules/coverage_guard.h"
+#include "core/zome/lattice_mirror.h"
 #include "core/zome/slots.h"
 
 namespace zomeify {
@@ -80,6 +81,10 @@ struct AnnealOptions
     //! Set: only nodes inside the region move, appear or go, and only struts and faces with a node
     //! inside it change (change_region.h); seeds are drawn inside it. Unset: the whole model.
     std::optional<ChangeRegion> region;
+    //! Set: every change is made together with its mirror image (mirrored.h), so a starting model
+    //! symmetric under it stays exactly symmetric. The fold-over repair (which changes one face at
+    //! a time) is then skipped. Unset: the two halves are free.
+    std::optional<LatticeMirror> mirror;
     //! Seconds between calls of the progress callback (and best-model snapshots).
     double progress_interval = 0.25;
 };

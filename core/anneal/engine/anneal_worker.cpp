@@ -11,6 +11,7 @@
 #include "core/anneal/engine/change_region.h"
 #include "core/anneal/engine/operator_draw.h"
 #include "core/anneal/engine/seed_slabs.h"
+#include "core/anneal/operators/mirrored.h"
 #include "core/anneal/proposal.h"
 
 namespace zomeify {
@@ -200,6 +201,14 @@ private:
             claims_->release_all();
             return;
         }
+        if (s_.options.mirror)
+            if (const Rejection r = mirror_proposal(s_.mesh, *s_.options.mirror, *claims_, proposal_);
+                r != Rejection::None)
+            {
+                ++totals_.rejections[static_cast<size_t>(r)];
+                claims_->release_all();
+                return;
+            }
         // No commit may add a face turned against the surface (no model gains a fold-over).
         EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change, fold_overs_);
         if (!delta.ok())

@@ -12,6 +12,7 @@
 #include "core/anneal/engine/annealer_state.h"
 #include "core/anneal/engine/change_region.h"
 #include "core/anneal/engine/fold_repair.h"
+#include "core/anneal/operators/mirrored.h"
 #include "core/anneal/proposal.h"
 #include "core/base/errors.h"
 #include "core/mesh/model_convert.h"
@@ -78,7 +79,8 @@ double estimate_t0(AnnealerState& s, int& valid)
         const auto kind = static_cast<OperatorKind>(rng.below(kOperatorKinds));
         if (s.mesh.is_deleted(seed) || !claims.take(seed))
             continue;
-        if (propose(kind, s.mesh, seed, rng, claims, proposal))
+        if (propose(kind, s.mesh, seed, rng, claims, proposal) &&
+            (!s.options.mirror || mirror_proposal(s.mesh, *s.options.mirror, claims, proposal) == Rejection::None))
         {
             // What the workers would consider.
             const FoldOvers fold_overs = s.options.refuse_new_fold_overs ? FoldOvers::Refuse : FoldOvers::Count;
@@ -390,7 +392,7 @@ AnnealResult Annealer::run(const ProgressCallback& progress)
     if (!s.error.empty())
         throw std::runtime_error("annealing failed: " + s.error);
     FoldRepairStats repair;
-    if (s.options.repair_fold_overs && !s.cancelled.load())
+    if (s.options.repair_fold_overs && !s.options.mirror && !s.cancelled.load())
         repair = repair_fold_overs(s);
     s.finished.store(true);
 

@@ -67,6 +67,8 @@ std::string_view rejection_name(Rejection r) noexcept
         return "over the kits";
     case Rejection::OutsideRegion:
         return "outside the region";
+    case Rejection::MirrorOverlap:
+        return "overlaps its mirror image";
     case Rejection::Overflow:
         return "overflow";
     }

@@ -1,0 +1,42 @@
+#include "core/zome/lattice_mirror.h"
+
+#include <algorithm>
+#include <array>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace zomeify {
+
+ZVec LatticeMirror::reflect(const ZVec& p) const
+{
+    std::array<QPhi, 3> t = {p.twice(0), p.twice(1), p.twice(2)};
+    t[axis] = twice_plane + twice_plane - t[axis];
+    return ZVec::from_twice(t[0], t[1], t[2]);
+}
+
+MirrorMismatch mirror_mismatch(const ZomeModel& model, const LatticeMirror& mirror)
+{
+    std::unordered_map<ZVec, uint32_t, ZVecHash> index;
+    for (uint32_t i = 0; i < model.nodes.size(); ++i)
+        index.emplace(model.nodes[i], i);
+    MirrorMismatch out;
+    std::vector<int64_t> image(model.nodes.size(), -1);
+    for (uint32_t i = 0; i < model.nodes.size(); ++i)
+        if (const auto it = index.find(mirror.reflect(model.nodes[i])); it != index.end())
+            image[i] = it->second;
+        else
+            ++out.balls;
+    const auto key = [](uint64_t a, uint64_t b) { return std::min(a, b) << 32 | std::max(a, b); };
+    std::unordered_set<uint64_t> struts;
+    for (const auto& s : model.struts)
+        struts.insert(key(s[0], s[1]));
+    for (const auto& s : model.struts)
+        if (image[s[0]] < 0 || image[s[1]] < 0 ||
+            !struts.contains(key(static_cast<uint64_t>(image[s[0]]), static_cast<uint64_t>(image[s[1]]))))
+            ++out.struts;
+    return out;
+}
+
+} // namespace zomeify

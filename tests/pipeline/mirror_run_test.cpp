@@ -1,0 +1,93 @@
+// `run --mirror auto` (run_pipeline with MirrorMode::Auto, mirror_choice.h, issue 41): a symmetric
+// shape gives a model that maps onto itself exactly (every ball and strut has its mirror image),
+// closed, of the shape's genus, with no clash and no fold-over, on one thread and on two; a
+// lopsided shape is reported as such and built as without the mirror; --from refuses it.
+#include <algorithm>
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "core/base/errors.h"
+#include "core/pipeline/pipeline.h"
+#include "tests/support/geom_fixtures.h"
+
+using namespace zomeify;
+
+namespace {
+
+PipelineOptions mirrored(int threads, uint64_t proposals)
+{
+    PipelineOptions o;
+    o.resolution = 9;
+    o.mirror = MirrorMode::Auto;
+    o.fidelity_samples = 2000;
+    o.anneal.threads = threads;
+    o.anneal.max_proposals = proposals;
+    return o;
+}
+
+void expect_symmetric_model(const PipelineResult& r, long long genus)
+{
+    ASSERT_TRUE(r.mirror.has_value());
+    EXPECT_TRUE(r.mirror->symmetric) << r.mirror->message;
+    ASSERT_TRUE(r.mirror->used.has_value()) << r.mirror->message;
+    const MirrorMismatch m = mirror_mismatch(r.model, *r.mirror->used);
+    EXPECT_EQ(m.balls, 0U);
+    EXPECT_EQ(m.struts, 0U);
+    EXPECT_TRUE(r.mirror_mismatch.symmetric());
+    EXPECT_TRUE(r.model_valid) << r.validation;
+    EXPECT_EQ(r.model_genus, genus);
+    EXPECT_EQ(r.clearance.total(), 0U);
+    EXPECT_EQ(r.fold_overs.count(), 0U);
+    EXPECT_GT(r.anneal->stats.commits, 1000U); // it did change the model
+    // The plane in mesh units is the shape's.
+    const AxisPlane plane = mesh_plane(*r.mirror->used, r.model.transform);
+    EXPECT_EQ(plane.axis, r.mirror->along->axis);
+    EXPECT_NEAR(plane.at, r.mirror->along->at, 1e-9 * (1.0 + std::abs(plane.at)));
+}
+
+TEST(MirrorRun, ASymmetricShapeGivesAnExactlySymmetricModel)
+{
+    const TriangleMesh torus = test::make_torus(3.0, 1.2, 48, 24);
+    expect_symmetric_model(run_pipeline(torus, 1, mirrored(1, 150000)), 1);
+}
+
+TEST(MirrorRun, TwoThreadsKeepTheModelSymmetric)
+{
+    const TriangleMesh torus = test::make_torus(3.0, 1.2, 48, 24);
+    expect_symmetric_model(run_pipeline(torus, 1, mirrored(2, 150000)), 1);
+}
+
+TEST(MirrorRun, ALopsidedShapeIsReportedAndBuiltAsWithoutTheMirror)
+{
+    // A torus bent up on one side and stretched on another: no plane is a mirror plane of it.
+    TriangleMesh lopsided = test::make_torus(3.0, 1.2, 48, 24);
+    for (Vec3& p : lopsided.positions)
+    {
+        p.z() += 0.3 * std::max(p.x(), 0.0);
+        p.y() *= p.y() > 0.0 ? 2.0 : 1.0;
+    }
+    PipelineOptions o = mirrored(1, 0);
+    o.initial_only = true;
+    const PipelineResult with = run_pipeline(lopsided, 1, o);
+    ASSERT_TRUE(with.mirror.has_value());
+    EXPECT_FALSE(with.mirror->symmetric) << with.mirror->message;
+    EXPECT_FALSE(with.mirror->used.has_value());
+    EXPECT_NE(with.mirror->message.find("Not made mirror-symmetric"), std::string::npos) << with.mirror->message;
+    o.mirror = MirrorMode::Off;
+    const PipelineResult without = run_pipeline(lopsided, 1, o);
+    EXPECT_EQ(with.model, without.model);
+}
+
+TEST(MirrorRun, AContinuedRunRefusesIt)
+{
+    const TriangleMesh torus = test::make_torus(3.0, 1.2, 48, 24);
+    PipelineOptions o = mirrored(1, 1000);
+    o.initial_only = true;
+    o.mirror = MirrorMode::Off;
+    PipelineOptions again = mirrored(1, 1000);
+    again.from = run_pipeline(torus, 1, o).model;
+    EXPECT_THROW(run_pipeline(torus, 1, again), InvalidInputError);
+}
+
+} // namespace
