@@ -20,6 +20,8 @@ namespace {
 
 // Counters are flushed to the shared atomics, the clock read and T recomputed once per batch.
 constexpr uint64_t kBatch = 64;
+// Draws of one proposal whose change overlaps its mirror image (mirrored.h).
+constexpr int kMirrorDraws = 8;
 
 // The time a commit waited for the commit lock (from `asked`) and held it (until destruction).
 class SectionTimer
@@ -195,20 +197,26 @@ private:
         ++counts.proposed;
         ++own_proposals_;
         ++unflushed_proposals_;
-        if (!propose(kind, s_.mesh, seed, rng_, *claims_, proposal_))
+        for (int attempt = 0;; ++attempt)
         {
-            ++totals_.rejections[static_cast<size_t>(proposal_.rejection)];
-            claims_->release_all();
-            return;
-        }
-        if (s_.options.mirror)
-            if (const Rejection r = mirror_proposal(s_.mesh, *s_.options.mirror, *claims_, proposal_);
-                r != Rejection::None)
+            if (!propose(kind, s_.mesh, seed, rng_, *claims_, proposal_))
             {
-                ++totals_.rejections[static_cast<size_t>(r)];
+                ++totals_.rejections[static_cast<size_t>(proposal_.rejection)];
                 claims_->release_all();
                 return;
             }
+            if (!s_.options.mirror)
+                break;
+            const Rejection r = mirror_proposal(s_.mesh, *s_.options.mirror, *claims_, proposal_);
+            if (r == Rejection::None)
+                break;
+            ++totals_.rejections[static_cast<size_t>(r)];
+            claims_->release_all();
+            // Near the plane most random positions make a change that is not its own mirror image;
+            // a few more draws at the same seed let balls on the plane move within it.
+            if (r != Rejection::MirrorOverlap || attempt + 1 >= kMirrorDraws || !claims_->take(seed))
+                return;
+        }
         // No commit may add a face turned against the surface (no model gains a fold-over).
         EnergyDelta delta = s_.energy.simulate(s_.mesh, proposal_.change, fold_overs_);
         if (!delta.ok())
