@@ -346,6 +346,10 @@ std::string Session::auto_resolution()
         out.update(nlohmann::json::parse(auto_resolution_json(a)));
         out["kept"] = a.genus_kept;
         out["seconds"] = a.seconds;
+        // Whether a run at this size would be made mirror-symmetric (`run --mirror auto`), and why.
+        const auto [lo, hi] = bounding_box(s.mesh);
+        const double cell = (hi - lo).maxCoeff() / std::max(1, a.resolution);
+        out["mirror"] = nlohmann::json::parse(mirror_choice_json(choose_mirror(*s.projector, cell / kPhi)));
         return out.dump();
     });
 }
@@ -383,6 +387,7 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
             // Improve, Fewer balls, More detail, Fix here: from the model on screen (it must have
             // been made for this shape: run_pipeline refuses it otherwise), at its own size.
             po.from = model();
+            po.mirror = MirrorMode::Off; // a model is continued as it is (the switch is for new runs)
             if (options.radius > 0.0)
                 po.fix = FixSpot{Vec3(options.near[0], options.near[1], options.near[2]), options.radius};
         }

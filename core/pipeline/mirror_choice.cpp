@@ -22,6 +22,48 @@ std::optional<AxisPlane> along_axis(const MirrorPlane& plane)
     return AxisPlane{axis, plane.normal[axis] > 0.0 ? plane.offset : -plane.offset};
 }
 
+struct AreaFigures
+{
+    Vec3 centroid = Vec3::Zero();
+    double area = 0.0;
+};
+
+AreaFigures area_figures(const TriangleMesh& mesh)
+{
+    AreaFigures f;
+    for (const auto& t : mesh.triangles)
+    {
+        const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+        const double area = 0.5 * (b - a).cross(c - a).norm();
+        f.area += area;
+        f.centroid += area * (a + b + c) / 3.0;
+    }
+    if (f.area > 0.0)
+        f.centroid /= f.area;
+    return f;
+}
+
+// The share of the surface's area within `band` of the plane: there a symmetric model can only have
+// balls on the plane and struts across it, so the less of the shape lies there the better it fits.
+double area_near(const TriangleMesh& mesh, const AxisPlane& plane, double band, double total)
+{
+    double near = 0.0;
+    for (const auto& t : mesh.triangles)
+    {
+        const Vec3 &a = mesh.positions[t[0]], &b = mesh.positions[t[1]], &c = mesh.positions[t[2]];
+        if (std::abs((a + b + c)[plane.axis] / 3.0 - plane.at) <= band)
+            near += 0.5 * (b - a).cross(c - a).norm();
+    }
+    return total > 0.0 ? near / total : 0.0;
+}
+
+MirrorPlane along(const SurfaceProjector& surface, const AxisPlane& plane)
+{
+    Vec3 normal = Vec3::Zero();
+    normal[plane.axis] = 1.0;
+    return measure_mirror_plane(surface, normal, plane.at);
+}
+
 } // namespace
 
 MirrorChoice choose_mirror(const SurfaceProjector& surface, double b0)
@@ -33,10 +75,26 @@ MirrorChoice choose_mirror(const SurfaceProjector& surface, double b0)
     c.along = along_axis(c.found);
     c.measured = c.found;
     if (c.along)
+        c.measured = along(surface, *c.along);
+    // A shape symmetric about several axis planes (a torus lying flat, the eight) is built on the one
+    // through the least of its surface: a flat shape's middle plane holds its whole rim.
+    const AreaFigures figures = area_figures(surface.mesh());
+    const double band = 0.5 * b0;
+    double least = c.along ? area_near(surface.mesh(), *c.along, band, figures.area) : 2.0;
+    for (int axis = 0; axis < 3; ++axis)
     {
-        Vec3 normal = Vec3::Zero();
-        normal[c.along->axis] = 1.0;
-        c.measured = measure_mirror_plane(surface, normal, c.along->at);
+        if (c.along && c.along->axis == axis)
+            continue;
+        const AxisPlane candidate{axis, figures.centroid[axis]};
+        const double share = area_near(surface.mesh(), candidate, band, figures.area);
+        if (share >= least)
+            continue;
+        const MirrorPlane m = along(surface, candidate);
+        if (m.rms / b0 > kMirrorToleranceB0 || (c.along && m.rms / b0 > 2.0 * c.measured.rms / b0 + 0.01))
+            continue;
+        c.along = candidate;
+        c.measured = m;
+        least = share;
     }
     const double rms_b0 = c.measured.rms / b0;
     char text[400];

@@ -98,3 +98,18 @@ TEST(MirrorRun, AContinuedRunRefusesIt)
 }
 
 } // namespace
+
+namespace {
+
+TEST(MirrorChoice, AFlatShapeIsBuiltOnAPlaneAcrossItNotOnItsMiddle)
+{
+    // The torus around z lies flat: z = 0 holds its whole rim; x = 0 and y = 0 cut two cross-sections.
+    const SurfaceProjector torus(test::make_torus(3.0, 1.2, 48, 24));
+    const MirrorChoice c = choose_mirror(torus, 0.5);
+    ASSERT_TRUE(c.symmetric) << c.message;
+    ASSERT_TRUE(c.along.has_value());
+    EXPECT_NE(c.along->axis, 2) << c.message;
+    EXPECT_NEAR(c.along->at, 0.0, 1e-3);
+}
+
+} // namespace

@@ -19,6 +19,14 @@ export function qualityText(summary) {
     const c = summary.clearance;
     lines.push(summary.clashes > 0 ? `Cannot be built as it is: ${c}.` : `Buildable: ${c}.`);
   }
+  const mirror = summary.stats && summary.stats.mirror;
+  if (mirror && mirror.used && mirror.model) {
+    lines.push(mirror.model.symmetric
+      ? `Mirror-symmetric (about a plane across the ${mirror.axis} axis): every ball and strut has its mirror image.`
+      : `Not exactly symmetric: ${mirror.model.balls_without_image} balls have no mirror image.`);
+  } else if (mirror && mirror.mode === 'auto' && mirror.message) {
+    lines.push(mirror.message);
+  }
   const folds = summary.stats && summary.stats.fold_overs;
   if (folds > 0) {
     const where = placesText(summary.stats.fold_over_places);

@@ -8,6 +8,20 @@
 import { KITS, haveText, checkSize, estimateFitText, fitPlanText } from './kits.js';
 
 export const PRESETS = { quick: 5, standard: 30, thorough: 120 };
+/**
+ * The core's judgement of the shape's mirror plane in a builder's words: "The shape is
+ * mirror-symmetric to within 0.5 mm (about a plane across its x axis): …", or the core's reason when
+ * it is not.
+ */
+export function mirrorText(m) {
+  if (!m) return '';
+  if (!m.symmetric) return String(m.message || '');
+  const mm = Number(m.rms_mm);
+  const within = mm < 0.05 ? 'exactly' : `to within ${mm.toFixed(1)} mm`;
+  return `The shape is mirror-symmetric ${within} (about a plane across its ${m.axis} axis): ` +
+    'the model is built symmetric, both halves with the same parts.';
+}
+
 const DEFAULTS = { resolution: 12, preset: 'standard', seconds: 30, target_nodes: 0, threads: 0, seed: 1,
   weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } };
 // Past these a suggested model is flagged before anyone buys the parts.
@@ -117,6 +131,8 @@ export class Controls {
 
     this.el('resolution').addEventListener('input', () => this.set({ resolution: this.el('resolution').value }));
     this.el('preset').addEventListener('change', () => this.presetChanged());
+    // Once the person sets the switch, a new estimate no longer sets it for them.
+    this.el('mirror')?.addEventListener('change', () => { this.mirrorTouched = true; });
     this.el('size-mode')?.addEventListener('change', () => this.set({ size_cm: this.el('size-mode').checked
       ? Number(this.el('size-cm').value) || 50 : 0 }));
     this.el('size-cm')?.addEventListener('input', () => this.scheduleEstimate());
@@ -176,14 +192,31 @@ export class Controls {
     // "run anyway" box, as there is nothing else to choose.
     this.noKeepingGrid = !a.kept;
     this.autoMessage = `Resolution chosen for this shape: ${String(a.message ?? '').replace(/\.$/, '')}.`;
+    this.showMirror(a.mirror);
     clearTimeout(this.estimateTimer); // this answer is the estimate of this resolution
     this.estimateSerial++;
     this.showEstimate(a, a.resolution);
     return a;
   }
 
+  /**
+   * The shape's mirror plane as the core judged it at the chosen size (core/pipeline/mirror_choice.h):
+   * the switch is on when the shape is symmetric (the run then builds both halves alike), with the
+   * core's reason when it is not. A switch the person set stays as they set it.
+   */
+  showMirror(m) {
+    const row = this.el('mirror-row');
+    if (!row) return;
+    row.hidden = !m;
+    if (!m) return;
+    if (!this.mirrorTouched) this.el('mirror').checked = Boolean(m.symmetric);
+    this.el('mirror-note').textContent = mirrorText(m);
+  }
+
   /** A new shape was loaded: the last shape's estimate, advice and consent go at once. */
   shapeChanged() {
+    this.mirrorTouched = false;
+    this.showMirror(null);
     clearTimeout(this.estimateTimer);
     this.estimateSerial++;
     this.autoMessage = '';
@@ -287,6 +320,10 @@ export class Controls {
     if (o.proposals !== undefined) this.el('proposals').value = o.proposals || '';
     if (o.initial_only !== undefined) this.initialOnly = Boolean(o.initial_only);
     if (o.pinned !== undefined) this.pinned = Boolean(o.pinned);
+    if (o.mirror !== undefined && this.el('mirror')) {
+      this.el('mirror').checked = o.mirror === 'auto';
+      this.mirrorTouched = true;
+    }
     for (const [k, v] of Object.entries(o.weights || {})) this.el('w-' + k).value = v;
   }
 
@@ -306,6 +343,7 @@ export class Controls {
       proposals: num('proposals', 0),
       initial_only: this.initialOnly,
       size_cm: this.sizeMode() ? checkSize(this.el('size-cm').value).cm : 0,
+      mirror: this.el('mirror')?.checked ? 'auto' : 'off',
       weights: Object.fromEntries(Object.keys(DEFAULTS.weights).map((k) => [k, num('w-' + k, DEFAULTS.weights[k])])),
     };
   }

@@ -42,6 +42,7 @@ export const Event = Object.freeze({
  * @property {number} [size_cm]      > 0: the built longest side in cm instead of the resolution (as run --size-cm)
  * @property {number} [threads]      annealing threads (clamped to maxThreads)
  * @property {number} [seed]
+ * @property {'auto'|'off'} [mirror] 'auto': a mirror-symmetric model when the shape is (core/pipeline/mirror_choice.h)
  * @property {{dist?: number, orient?: number, fair?: number, complex?: number}} [weights]
  */
 

@@ -311,3 +311,11 @@ test('an open sheet is refused with "Give it a thickness", which loads the same 
   await t.app.loadBytes('cloud.obj', new ArrayBuffer(3));
   assert.equal(t.statusEl.children.length, 0);
 });
+
+test('quality: a mirrored model says it maps onto itself; a shape not symmetric says why', () => {
+  const used = { stats: { mirror: { mode: 'auto', used: true, axis: 'z', at: 0, model: { symmetric: true } } } };
+  assert.equal(qualityText(used), 'Mirror-symmetric (about a plane across the z axis): every ball and strut has its mirror image.');
+  const refused = { stats: { mirror: { mode: 'auto', used: false, message: 'Not made mirror-symmetric: the shape is lopsided.' } } };
+  assert.equal(qualityText(refused), 'Not made mirror-symmetric: the shape is lopsided.');
+  assert.equal(qualityText({ stats: { mirror: { mode: 'off', message: '' } } }), '');
+});

@@ -4,7 +4,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { Controls, PRESETS, presetForSeconds, autoThreadCount, estimateText, adviceText, billText, sizeText, isLarge,
-  kitsText, setupSeconds, setupText, SETUP }
+  kitsText, setupSeconds, setupText, SETUP, mirrorText }
   from '../src/controls.js';
 import { fakeRoot, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
 
@@ -184,7 +184,8 @@ test('a shown result of this shape and resolution is the one kit sentence; a new
 test('the form read as RunOptions: defaults, and empty or bad fields fall back', () => {
   const { controls, el } = makeControls();
   assert.deepEqual(controls.get(), { resolution: 12, seconds: 30, target_nodes: 0, threads: 2, seed: 1, proposals: 0,
-    initial_only: false, size_cm: 0, weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } });
+    initial_only: false, size_cm: 0, mirror: 'off',
+    weights: { dist: 30, orient: 100, fair: 5, complex: 1, surface: 100, fold: 1 } });
   el('seed').value = '';
   el('w-fair').value = 'abc';
   el('threads').value = '9'; // more than the build has
@@ -236,4 +237,29 @@ test('updateEstimate: a failed estimate (no mesh) clears the line and the old wa
   assert.equal(el('estimate').textContent, '');
   assert.equal(el('advice').text, '');
   assert.equal(el('advice').hidden, true);
+});
+
+test('mirror: the switch follows the core\'s judgement of the shape until the person sets it', () => {
+  const { controls, el } = makeControls();
+  const symmetric = { mode: 'auto', symmetric: true, axis: 'x', at: 0, rms_mm: 0.47, max_mm: 5.6 };
+  const lopsided = { mode: 'auto', symmetric: false, message: 'Not made mirror-symmetric: the shape\'s best mirror plane (normal 0.04, 0.15, 0.99) is not perpendicular to an axis of the mesh.' };
+  assert.equal(mirrorText(symmetric),
+    'The shape is mirror-symmetric to within 0.5 mm (about a plane across its x axis): the model is built symmetric, both halves with the same parts.');
+  assert.match(mirrorText({ ...symmetric, rms_mm: 0.01 }), /mirror-symmetric exactly/);
+  assert.equal(mirrorText(lopsided), lopsided.message);
+  controls.showMirror(symmetric);
+  assert.equal(el('mirror-row').hidden, false);
+  assert.equal(el('mirror').checked, true);
+  assert.equal(controls.get().mirror, 'auto');
+  controls.showMirror(lopsided);
+  assert.equal(el('mirror').checked, false);
+  assert.equal(controls.get().mirror, 'off');
+  assert.equal(el('mirror-note').textContent, lopsided.message);
+  controls.set({ mirror: 'auto' }); // the person (or a script) chose: a new estimate keeps it
+  controls.showMirror(lopsided);
+  assert.equal(controls.get().mirror, 'auto');
+  controls.shapeChanged(); // a new shape: the switch is the core's again
+  assert.equal(el('mirror-row').hidden, true);
+  controls.showMirror(lopsided);
+  assert.equal(controls.get().mirror, 'off');
 });
