@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
@@ -13,6 +14,7 @@
 #include "core/pipeline/z0_choice.h"
 #include "core/score/fold_over_report.h"
 #include "core/voxel/advisor.h"
+#include "core/zome/real_sizes.h"
 #include "core/zome/slots.h"
 
 namespace zomeify {
@@ -51,26 +53,34 @@ void build_mirrored_z0(PipelineResult& r, const TriangleMesh& surface, const Sur
     r.mirror = choose_mirror(projector, cell / kPhi);
     if (!r.mirror->symmetric)
         return;
-    InitialModelOptions o = z0_options;
-    o.mirror = r.mirror->along;
-    InitialModel z0 = build_initial_model(surface, is_inside, o);
-    const std::optional<int> corner = mirror_corner_index(z0.report.grid, *o.mirror);
-    const bool kept = z0.report.valid && z0.report.topology.genus == r.surface_genus &&
-                      z0.report.topology.components == 1 && corner && validate(from_model(z0.model)).ok();
-    if (kept)
+    // The union keeps thin parts; when it closes a hole of the shape, the intersection may keep it.
+    for (const MirrorMerge merge : {MirrorMerge::Union, MirrorMerge::Intersection})
     {
+        InitialModelOptions o = z0_options;
+        o.mirror = r.mirror->along;
+        o.mirror_merge = merge;
+        InitialModel z0 = build_initial_model(surface, is_inside, o);
+        const std::optional<int> corner = mirror_corner_index(z0.report.grid, *o.mirror);
+        if (!z0.report.valid || z0.report.topology.genus != r.surface_genus || z0.report.topology.components != 1 ||
+            !corner || !validate(from_model(z0.model)).ok())
+            continue;
         const LatticeMirror lattice{o.mirror->axis, QPhi{0, 2 * static_cast<int64_t>(*corner)}};
-        if (mirror_mismatch(z0.model, lattice).symmetric())
-        {
-            r.initial = std::move(z0);
-            anneal.mirror = lattice;
-            r.mirror->used = lattice;
-            return;
-        }
+        if (!mirror_mismatch(z0.model, lattice).symmetric())
+            continue;
+        r.initial = std::move(z0);
+        anneal.mirror = lattice;
+        r.mirror->used = lattice;
+        return;
     }
     r.mirror->symmetric = false;
-    r.mirror->message += " No mirror-symmetric start with the shape's genus was found at this size: the model is "
-                         "made without the mirror.";
+    const std::string axis = std::string(1, "xyz"[r.mirror->along->axis]);
+    char text[300];
+    std::snprintf(text, sizeof text,
+                  "Not made mirror-symmetric: the shape is symmetric about %s = %.4g (RMS %.1f mm), but no "
+                  "symmetric start with as many holes as the shape (%lld) was found at this size.",
+                  axis.c_str(), r.mirror->along->at, r.mirror->measured.rms / r.mirror->b0 * kMmPerB0,
+                  static_cast<long long>(r.surface_genus));
+    r.mirror->message = text;
 }
 
 // Z0 at the options' resolution (or the automatic one), checked, with its report in r.

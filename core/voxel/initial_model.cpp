@@ -49,7 +49,7 @@ Extraction extract_cells(const VoxelGrid& cells, const InitialModelOptions& opti
     if (!options.mirror)
         return extract_boundary(cells);
     VoxelGrid symmetric = cells;
-    make_mirror_symmetric(symmetric, *options.mirror);
+    make_mirror_symmetric(symmetric, *options.mirror, options.mirror_merge);
     return extract_boundary(symmetric);
 }
 

@@ -51,6 +51,7 @@ struct InitialModelOptions
     //! symmetric about it (mirror_cells.h) before each boundary is extracted, so Z0 is exactly
     //! mirror-symmetric. The bounding box should be symmetric about the plane.
     std::optional<AxisPlane> mirror;
+    MirrorMerge mirror_merge = MirrorMerge::Union;
 };
 
 //! What happened, for the CLI's summary and --stats.

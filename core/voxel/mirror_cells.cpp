@@ -15,7 +15,7 @@ std::optional<int> mirror_corner_index(const GridSpec& grid, const AxisPlane& pl
     return static_cast<int>(k);
 }
 
-void make_mirror_symmetric(VoxelGrid& grid, const AxisPlane& plane)
+void make_mirror_symmetric(VoxelGrid& grid, const AxisPlane& plane, MirrorMerge merge)
 {
     const std::optional<int> corner = mirror_corner_index(grid.spec(), plane);
     if (!corner)
@@ -31,8 +31,10 @@ void make_mirror_symmetric(VoxelGrid& grid, const AxisPlane& plane)
                 m[a] = 2 * *corner - 1 - m[a];
                 if (!before.contains(m[0], m[1], m[2]))
                     grid.set(i, j, k, Cell::Empty);
-                else if (!before.occupied(i, j, k) && before.occupied(m[0], m[1], m[2]))
+                else if (merge == MirrorMerge::Union && !before.occupied(i, j, k) && before.occupied(m[0], m[1], m[2]))
                     grid.set(i, j, k, before.at(m[0], m[1], m[2]));
+                else if (merge == MirrorMerge::Intersection && !before.occupied(m[0], m[1], m[2]))
+                    grid.set(i, j, k, Cell::Empty);
             }
 }
 

@@ -20,9 +20,16 @@ struct AxisPlane
 //! of a cell); cell i then mirrors to 2·index − 1 − i.
 std::optional<int> mirror_corner_index(const GridSpec& grid, const AxisPlane& plane);
 
-//! Every cell whose mirror image is occupied becomes occupied too (the union of the cells and their
-//! image: thin parts of either side are kept). Cells whose image lies outside the grid are emptied.
-//! Throws InvalidInputError when no corner layer lies on the plane.
-void make_mirror_symmetric(VoxelGrid& grid, const AxisPlane& plane);
+//! How a cell and its mirror image become one: either occupied (the union: thin parts of either side
+//! are kept), or both (the intersection: a gap or hole of either side is kept).
+enum class MirrorMerge
+{
+    Union,
+    Intersection,
+};
+
+//! Makes the cells symmetric about the plane by `merge`. Cells whose image lies outside the grid are
+//! emptied. Throws InvalidInputError when no corner layer lies on the plane.
+void make_mirror_symmetric(VoxelGrid& grid, const AxisPlane& plane, MirrorMerge merge = MirrorMerge::Union);
 
 } // namespace zomeify

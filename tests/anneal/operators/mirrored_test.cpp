@@ -95,6 +95,13 @@ TEST(MirrorCells, TheGridHasABoundaryOnThePlaneAndSymmetricCells)
     ASSERT_TRUE(cells.contains(image, 2, 3));
     EXPECT_EQ(cells.at(image, 2, 3), Cell::Surface);
     EXPECT_FALSE(mirror_corner_index(grid, AxisPlane{0, 0.37 + 0.5 * grid.cell}).has_value());
+    // The intersection keeps a cell only with its image: the pair stays, a lone cell goes.
+    cells.set(3, 1, 1, Cell::Inside);
+    make_mirror_symmetric(cells, AxisPlane{0, 0.37}, MirrorMerge::Intersection);
+    EXPECT_EQ(cells.at(1, 2, 3), Cell::Surface);
+    EXPECT_EQ(cells.at(image, 2, 3), Cell::Surface);
+    EXPECT_EQ(cells.at(3, 1, 1), Cell::Empty);
+    EXPECT_EQ(cells.occupied_count(), 2U);
 }
 
 TEST(MirroredProposals, EveryChangeIsExactAndKeepsTheModelSymmetric)
