@@ -102,6 +102,10 @@ export class ModelWork {
   async step(kind) {
     const before = this.app.shownSummary;
     if (!before || this.app.running) return null;
+    if (kind === 'more' && capacityFull(before)) { // the core would refuse it (window.zomeify.workOn)
+      this.note(capacityFull(before));
+      return null;
+    }
     const saved = (await this.bridge.exportModel('before.zome.json')).bytes;
     const fix = kind === 'fix' || kind === 'here';
     const extra = { continue: true, target_nodes: fix ? 0 : stepTarget(kind, before.balls) };

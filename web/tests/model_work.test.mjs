@@ -9,6 +9,8 @@ import { fakeRoot } from './helpers/fake_dom.mjs';
 const summary = (balls, gap) => ({ balls, valid: true,
   stats: { b1_mesh_units: 0.2, fidelity: { hausdorff_mm: gap, largest_gap: { at: [1, 2, 3] } } } });
 
+const MORE_TITLE = 'The same size with 30% more balls, at most as many as the shape holds well at that size';
+
 function scripted() {
   const runs = [], loads = [];
   const app = { shownSummary: summary(400, 50), modelOfSurface: true, running: false,
@@ -21,7 +23,7 @@ function scripted() {
   const bridge = { exportModel: async () => ({ bytes: new Uint8Array([1, 2, 3]) }),
     load: async (name, bytes) => { loads.push({ name, bytes }); return { kind: 'model' }; } };
   const root = fakeRoot();
-  root.querySelector('#work-more').title = 'The same size with 30% more balls'; // as in index.html
+  root.querySelector('#work-more').title = MORE_TITLE; // as in index.html
   return { work: new ModelWork(root, { app, bridge }), app, runs, loads, el: (id) => root.querySelector('#' + id) };
 }
 
@@ -89,8 +91,8 @@ test('no steps while a run goes, on a model of another shape, or on an invalid o
   assert.equal(el('work-fix').disabled, true);
 });
 
-test('More detail at the surface\'s capacity: off, and the core\'s sentence says why', () => {
-  const { work, app, el } = scripted();
+test('More detail at the surface\'s capacity: off, and the core\'s sentence says why', async () => {
+  const { work, app, runs, el } = scripted();
   assert.equal(el('work-more').disabled, false);
   const full = 'the model has 520 balls and at this size the surface holds about 500 well; more would crumple ' +
     'the model (the paper\'s fold-overs): for more detail choose a larger size (a new run)';
@@ -103,10 +105,13 @@ test('More detail at the surface\'s capacity: off, and the core\'s sentence says
   assert.equal(el('work-improve').disabled, false);
   assert.match(el('work-more').title, /^The model has 520 balls and at this size the surface holds about 500 well/);
   assert.match(el('work-note').textContent, /^The model has 520 balls/);
+  assert.equal(await work.step('more'), null); // through the API too: no run, the same sentence
+  assert.match(el('work-note').textContent, /^The model has 520 balls/);
+  assert.equal(runs.length, 0);
   app.shownSummary = { ...summary(380, 40), capacity: 500 }; // after Fewer balls, or Undo
   work.refresh();
   assert.equal(el('work-more').disabled, false);
-  assert.equal(el('work-more').title, 'The same size with 30% more balls');
+  assert.equal(el('work-more').title, MORE_TITLE);
   assert.equal(el('work-note').textContent, '');
 });
 
