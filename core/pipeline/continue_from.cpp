@@ -112,7 +112,7 @@ size_t surface_capacity(double area, double b0_length)
     if (!(area > 0.0) || !(b0_length > 0.0) || !std::isfinite(area / (b0_length * b0_length)))
         return 0;
     const double balls = area / (b0_length * b0_length) / kAreaPerBallB0Squared;
-    return std::max<size_t>(4, static_cast<size_t>(std::llround(std::min(balls, 1e12))));
+    return std::max<size_t>(4, static_cast<size_t>(std::llround(std::min(balls, 1e9))));
 }
 
 size_t surface_capacity(const TriangleMesh& surface, const ModelTransform& transform)

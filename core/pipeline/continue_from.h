@@ -74,7 +74,8 @@ std::string capacity_capped_text(size_t capacity);
 std::string capacity_full_text(size_t balls, size_t capacity);
 
 //! A model of `balls` balls has the capacity (0: unknown, never): it has at least the capacity less
-//! 3 % of it (and 3 balls), so a step could add no more than the annealer's spread between seeds.
+//! 3 % of it (and 3 balls); a step capped at the capacity from there adds almost nothing (the bunny
+//! at the paper's size: 509 balls against 510 stayed 509 in three capped steps).
 bool at_capacity(size_t balls, size_t capacity);
 
 //! A continued run's ball target against the capacity (0: unknown, no bound): `target` when it
