@@ -42,6 +42,7 @@ struct LoadedSurface
 {
     TriangleMesh mesh;
     SurfaceReport report;
+    double area = 0.0; //!< mesh units² (surface_capacity)
     std::unique_ptr<SurfaceProjector> projector;
     std::unique_ptr<InsideTest> inside;
 
@@ -154,6 +155,7 @@ std::string Session::load_mesh(const std::string& bytes, const std::string& file
         auto loaded = std::make_unique<LoadedSurface>();
         loaded->mesh = prepared.mesh;
         loaded->report = prepared.report;
+        loaded->area = surface_area(prepared.mesh);
         loaded->projector = std::make_unique<SurfaceProjector>(prepared.mesh);
         loaded->inside = std::make_unique<InsideTest>(*loaded->projector);
         surface_ = std::move(loaded);
@@ -672,6 +674,15 @@ std::string Session::summary() const
         if (out["stats"].is_discarded())
             out["stats"] = nlohmann::json::object();
         out["surface"] = surface_ ? surface_name_ : "";
+        // How many balls the loaded shape holds well at this model's size (More detail, issue 40),
+        // and the core's sentence when the model has them already.
+        const double b0 = kind_info(StrutKind::B0).length * m.transform.scale;
+        if (const size_t capacity = surface_ && !m.nodes.empty() ? surface_capacity(surface_->area, b0) : 0)
+        {
+            out["capacity"] = capacity;
+            if (at_capacity(m.nodes.size(), capacity))
+                out["capacity_full"] = capacity_full_text(m.nodes.size(), capacity);
+        }
         return out.dump();
     });
 }

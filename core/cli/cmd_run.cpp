@@ -237,6 +237,8 @@ std::string summary(const std::string& path, const PipelineResult& r, const std:
           << r.model.nodes.size() << " balls, " << r.model.struts.size() << " struts, genus " << r.model_genus << ", "
           << fold_over_summary(r.fold_overs) << "; " << clearance_summary(r.clearance) << "; "
           << fidelity_summary(r.fidelity) << ".";
+        if (r.capped)
+            s << " " << capacity_capped_text(r.capacity);
         if (r.continued && !r.fix_spot && short_of_target(m0.nodes.size(), r.target_nodes, r.model.nodes.size()))
             s << " It reached " << r.model.nodes.size() << " balls of the " << r.target_nodes
               << " asked: at this size the model cannot " << (r.target_nodes < m0.nodes.size() ? "lose" : "take")

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "core/anneal/engine/change_region.h"
+#include "core/base/errors.h"
+#include "core/zome/slots.h"
 
 namespace zomeify {
 
@@ -79,6 +81,76 @@ bool short_of_target(size_t start, size_t target, size_t reached)
     if (target > start)
         return static_cast<double>(reached) < static_cast<double>(target) - slack;
     return false;
+}
+
+// The capacity's constant (kAreaPerBallB0Squared), 2026-12-07: runs from Z0 at several ball targets,
+// `run MESH [size] --target-nodes N --threads 1 --proposals 6000000 --seed 1|2`, scored by
+// `score --samples 100000` (symmetric RMS in b0, mean of the two seeds):
+//   bunny, --b1 0.1907 (408 b0²): 400: 0.102, 450: 0.102, 500: 0.103, 550: 0.109, 600: 0.113, 700: 0.130
+//   torus, automatic 8 cells (264 b0²): 200: 0.085, 250: 0.083, 300: 0.086, 350: 0.091, 400: 0.103
+//   fertility, automatic 10 cells (387 b0²): 300: 0.221, 375: 0.218, 450: 0.197, 525: 0.206, 600: 0.206,
+//     700: 0.198, 800: 0.218
+// Per mesh, the area per ball that keeps the capacity between the count with the lowest RMS and the
+// first count more than 5 % worse than it: bunny 0.74–0.91 b0² (550 and 450 balls), torus 0.75–1.06
+// (350, 250), fertility 0.48–0.86 (800, 450). All three hold 0.75–0.86; 0.8 is its middle. It lies
+// between a tiling by equilateral b0 triangles (0.866 b0² a ball) and one by the smallest yellow
+// triangles (0.65 b0²). docs/work-on-a-model.md has the table.
+
+double surface_area(const TriangleMesh& mesh)
+{
+    double area = 0.0;
+    for (const auto& t : mesh.triangles)
+    {
+        const Vec3& a = mesh.positions[t[0]];
+        area += 0.5 * (mesh.positions[t[1]] - a).cross(mesh.positions[t[2]] - a).norm();
+    }
+    return area;
+}
+
+size_t surface_capacity(double area, double b0_length)
+{
+    if (!(area > 0.0) || !(b0_length > 0.0) || !std::isfinite(area / (b0_length * b0_length)))
+        return 0;
+    const double balls = area / (b0_length * b0_length) / kAreaPerBallB0Squared;
+    return std::max<size_t>(4, static_cast<size_t>(std::llround(std::min(balls, 1e9))));
+}
+
+size_t surface_capacity(const TriangleMesh& surface, const ModelTransform& transform)
+{
+    if (!(transform.scale > 0.0) || !std::isfinite(transform.scale))
+        return 0;
+    return surface_capacity(surface_area(surface), kind_info(StrutKind::B0).length * transform.scale);
+}
+
+std::string capacity_capped_text(size_t capacity)
+{
+    const std::string n = std::to_string(capacity);
+    return "At this size the surface holds about " + n +
+           " balls well; more would crumple the model (the paper's fold-overs): the target was kept at " + n +
+           ". For more detail choose a larger size (a new run).";
+}
+
+std::string capacity_full_text(size_t balls, size_t capacity)
+{
+    return "the model has " + std::to_string(balls) + " balls and at this size the surface holds about " +
+           std::to_string(capacity) +
+           " well; more would crumple the model (the paper's fold-overs): for more detail choose a larger size (a "
+           "new run)";
+}
+
+bool at_capacity(size_t balls, size_t capacity)
+{
+    const double c = static_cast<double>(capacity);
+    return capacity > 0 && static_cast<double>(balls) + std::max(3.0, 0.03 * c) >= c;
+}
+
+size_t capped_target(size_t balls, size_t target, size_t capacity)
+{
+    if (capacity == 0 || target <= balls)
+        return target;
+    if (at_capacity(balls, capacity))
+        throw InvalidInputError(capacity_full_text(balls, capacity));
+    return std::min(target, capacity);
 }
 
 ChangeRegion region_of(const FixSpot& spot, const ModelTransform& t)

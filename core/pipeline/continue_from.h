@@ -10,6 +10,7 @@
 
 #include "core/anneal/engine/anneal_options.h"
 #include "core/geom/closest_point.h"
+#include "core/geom/triangle_mesh.h"
 #include "core/zome/model.h"
 
 namespace zomeify {
@@ -48,6 +49,39 @@ std::string model_fit_problem(const ZomeModel& model, const SurfaceProjector& pr
 //! Whether a continued run stopped short of its ball target: more than 10 % (and 3 balls) away
 //! from it in the direction asked (the paper's saturation point of a decimation).
 bool short_of_target(size_t start, size_t target, size_t reached);
+
+//! The surface's capacity (issue 40, More detail): at a fixed size a surface holds only so many
+//! balls well; past that, more balls make the model crumple (the paper's fold-overs) and fit worse.
+//! Measured as the surface's area in b0² over the area one ball of the best-fitting models takes
+//! (calibrated on three meshes: continue_from.cpp and docs/work-on-a-model.md give the figures).
+inline constexpr double kAreaPerBallB0Squared = 0.8;
+
+//! The area of a triangle mesh (mesh units²).
+double surface_area(const TriangleMesh& mesh);
+
+//! About how many balls a surface of `area` (mesh units²) holds well with b0 = `b0_length` mesh
+//! units: area / b0² / kAreaPerBallB0Squared, rounded, at least 4 (the core's least model).
+size_t surface_capacity(double area, double b0_length);
+
+//! The same for `surface` at the scale of a model placed by `transform` (b0 = the B0 strut's
+//! length × transform.scale); 0 when the transform has no scale.
+size_t surface_capacity(const TriangleMesh& surface, const ModelTransform& transform);
+
+//! A continued run's sentence when its ball target was lowered to the capacity.
+std::string capacity_capped_text(size_t capacity);
+
+//! Why a model of `balls` balls gets no more balls at its size (at_capacity()), in one line.
+std::string capacity_full_text(size_t balls, size_t capacity);
+
+//! A model of `balls` balls has the capacity (0: unknown, never): it has at least the capacity less
+//! 3 % of it (and 3 balls); a step capped at the capacity from there adds almost nothing (the bunny
+//! at the paper's size: 509 balls against 510 stayed 509 in three capped steps).
+bool at_capacity(size_t balls, size_t capacity);
+
+//! A continued run's ball target against the capacity (0: unknown, no bound): `target` when it
+//! asks for no more balls than the model has or than the capacity, else the capacity; throws
+//! InvalidInputError (capacity_full_text) when it asks for more and the model is at_capacity().
+size_t capped_target(size_t balls, size_t target, size_t capacity);
 
 //! The spot in the model's own units.
 ChangeRegion region_of(const FixSpot& spot, const ModelTransform& transform);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <utility>
 
 #include "core/base/errors.h"
 #include "core/base/stopwatch.h"
@@ -159,6 +160,15 @@ ZomeMesh continue_from(PipelineResult& r, const TriangleMesh& surface, const Sur
         if (anneal.target_nodes == 0)
             anneal.target_nodes = fix_target(from, *r.region);
     }
+    // More balls than the surface holds well at this size make the model worse (More detail, issue 40).
+    r.capacity = surface_capacity(surface, from.transform);
+    if (!options.fix)
+    {
+        const size_t target = capped_target(from.nodes.size(), anneal.target_nodes, r.capacity);
+        r.capped = target != anneal.target_nodes;
+        if (r.capped)
+            r.asked_nodes = std::exchange(anneal.target_nodes, target);
+    }
     return mesh;
 }
 
@@ -265,6 +275,8 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
     if (callbacks.initial)
         callbacks.initial(r.initial.model);
 
+    if (r.capacity == 0)
+        r.capacity = surface_capacity(surface, r.initial.model.transform);
     const SurfaceContext context(projector, r.initial.model.transform);
     if (options.initial_only)
     {

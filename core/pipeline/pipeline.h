@@ -51,7 +51,9 @@ struct PipelineOptions
     //! energy than the model gives the model back.
     std::optional<ZomeModel> from;
     //! With `from`: change only the model near this spot (`--near X,Y,Z --radius R`); the ball
-    //! target defaults to fix_target().
+    //! target defaults to fix_target(). Without it, a target above the surface's capacity
+    //! (surface_capacity) is lowered to it, and one above the model's count is refused when the
+    //! model already has about the capacity (at_capacity, capacity_full_text).
     std::optional<FixSpot> fix;
     //! Auto: a mirror-symmetric model when the shape is symmetric about a plane along a mesh axis
     //! (mirror_choice.h). Not with `from`.
@@ -89,6 +91,12 @@ struct PipelineResult
     MirrorMismatch mirror_mismatch;
     double spot_gap_before = 0.0; //!< a fix: the largest gap within the spot before (b0)
     double spot_gap_after = 0.0;  //!< and after
+    //! About how many balls the surface holds well at the model's size (surface_capacity); 0 unknown.
+    size_t capacity = 0;
+    //! A continued run (not a fix) asked for more balls than `capacity`: its target was lowered to
+    //! it from `asked_nodes` (capacity_capped_text says so).
+    bool capped = false;
+    size_t asked_nodes = 0;
     //! The model to write: the best annealed model when the run was cancelled, the final one
     //! otherwise (Z0 with initial_only). Carries the transform and stats_json.
     ZomeModel model;

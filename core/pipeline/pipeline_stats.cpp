@@ -125,6 +125,7 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
         j["anneal"] = anneal_json(*r.anneal);
     j["resolution"] = r.resolution;
     j["b1_mesh_units"] = z0.grid.cell;
+    j["capacity"] = r.capacity;
     j["initial"] = {{"N", r.initial.model.nodes.size()},
                     {"struts", r.initial.model.struts.size()},
                     {"faces", r.initial.model.faces.size()},
@@ -166,7 +167,14 @@ std::string pipeline_stats_json(const PipelineResult& r, int indent)
             {"from_struts", r.initial.model.struts.size()},
             {"kept_as_it_was", r.kept_start},
             {"target_nodes", r.target_nodes},
-            {"short_of_target", short_of_target(r.initial.model.nodes.size(), r.target_nodes, r.model.nodes.size())}};
+            {"short_of_target", short_of_target(r.initial.model.nodes.size(), r.target_nodes, r.model.nodes.size())},
+            {"capacity", r.capacity},
+            {"capped", r.capped}};
+        if (r.capped)
+        {
+            j["continued"]["asked_nodes"] = r.asked_nodes;
+            j["continued"]["capacity_note"] = capacity_capped_text(r.capacity);
+        }
         if (r.region)
             j["continued"]["region"] = {{"centre", r.region->centre},
                                         {"radius", r.region->radius},

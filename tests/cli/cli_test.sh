@@ -170,6 +170,14 @@ else bad "run --within-estimate: named '$named' ($have): $(tail -c 300 <<<"$out"
 out=$("${cli[@]}" run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --target-nodes 150 --proposals 200000 --threads 1 -o "$tmp/c.zome.json" 2>/dev/null)
 if grep -Eq '^Continued torus.obj from a model of [0-9]+ balls and [0-9]+ struts \(genus 1 against the surface.s 1\)\. Annealed .*genus 1,' <<<"$out"; then ok
 else bad "run --from: $(tail -c 300 <<<"$out")"; fi
+# More detail past what the surface holds at this size: the target is capped at the capacity and
+# the summary says so; a model that has it already gets no more balls (issue 40).
+out=$("${cli[@]}" run "$shared/data/meshes/torus.obj" --from "$tmp/c.zome.json" --target-nodes 5000 --proposals 50000 --threads 1 -o "$tmp/m.zome.json" --stats "$tmp/m.json" 2>/dev/null)
+cap=$(sed -n 's/.* At this size the surface holds about \([0-9]*\) balls well; more would crumple the model (the paper.s fold-overs): the target was kept at \1\. For more detail choose a larger size (a new run)\..*/\1/p' <<<"$out")
+if [ -n "$cap" ] && grep -q "\"capacity\": $cap," "$tmp/m.json" && grep -q '"capped": true' "$tmp/m.json"; then ok
+else bad "run --from past the capacity: '$cap': $(tail -c 300 <<<"$out")"; fi
+"${cli[@]}" run "$shared/data/meshes/torus.obj" --resolution 4 --target-nodes 300 --proposals 200000 --threads 1 -o "$tmp/full.zome.json" >/dev/null 2>&1
+expect_error "from at capacity" '^zomeify: the model has [0-9]+ balls and at this size the surface holds about [0-9]+ well; more would crumple the model .*: for more detail choose a larger size \(a new run\)$' run "$shared/data/meshes/torus.obj" --from "$tmp/full.zome.json" --target-nodes 400 --proposals 1000 -o "$tmp/x.zome.json"
 expect_error "from other mesh" '^zomeify: the model to continue was not made for this mesh' run "$shared/data/meshes/bunny.obj" --from "$tmp/w.zome.json" -o "$tmp/x.zome.json"
 expect_error "near alone"      '--near and --radius fix one spot of a model: give it with --from MODEL' run "$shared/data/meshes/torus.obj" --near 0,0,0 --radius 1 -o "$tmp/x.zome.json"
 expect_error "near bad point"  "--near wants a point X,Y,Z in mesh units, got '1,2'" run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --near 1,2 --radius 1 -o "$tmp/x.zome.json"

@@ -5,12 +5,15 @@
 // another scale, is refused in one line.
 #include "core/pipeline/continue_from.h"
 
+#include <cmath>
+#include <numbers>
 #include <set>
 
 #include <gtest/gtest.h>
 
 #include "core/base/errors.h"
 #include "core/pipeline/pipeline.h"
+#include "core/zome/slots.h"
 #include "tests/support/geom_fixtures.h"
 
 using namespace zomeify;
@@ -134,4 +137,71 @@ TEST(ContinueFrom, AModelOfAnotherMeshOrScaleIsRefused)
     lost.transform.scale = 0.0;
     EXPECT_NE(model_fit_problem(lost, SurfaceProjector(torus())).find("no placement"), std::string::npos);
     EXPECT_EQ(model_fit_problem(model, SurfaceProjector(torus())), "");
+}
+
+// More detail at a fixed size (issue 40): the surface's capacity is its area in b0² over the
+// calibrated area per ball, and a continued run asking for more is capped at it, or refused when
+// the model has it already.
+TEST(SurfaceCapacity, OfASphereIsItsAreaInB0SquaredOverTheAreaPerBall)
+{
+    const TriangleMesh sphere = test::make_icosphere(2.0, 4);
+    const double area = surface_area(sphere);
+    EXPECT_NEAR(area, 4.0 * std::numbers::pi * 4.0, 0.01 * 4.0 * std::numbers::pi * 4.0);
+    const double b0 = 0.25; // 804 b0² of surface
+    const size_t capacity = surface_capacity(area, b0);
+    EXPECT_EQ(capacity, static_cast<size_t>(std::llround(area / (b0 * b0) / kAreaPerBallB0Squared)));
+    // Between a tiling by equilateral b0 triangles (0.866 b0² a ball) and one by the smallest yellow
+    // triangles (0.65 b0²): the calibrated 0.8 b0² a ball gives about 1000 (continue_from.cpp).
+    EXPECT_GE(capacity, static_cast<size_t>(area / (b0 * b0) / 0.866));
+    EXPECT_LE(capacity, static_cast<size_t>(area / (b0 * b0) / 0.65));
+    ModelTransform t;
+    t.scale = b0 / kind_info(StrutKind::B0).length;
+    EXPECT_EQ(surface_capacity(sphere, t), capacity);
+    t.scale = 0.0;
+    EXPECT_EQ(surface_capacity(sphere, t), 0u);
+    EXPECT_EQ(surface_capacity(1e-9, 1.0), 4u); // never below the core's least model
+}
+
+TEST(SurfaceCapacity, ATargetPastItIsCappedAndAModelThatHasItGetsNoMore)
+{
+    EXPECT_EQ(capped_target(300, 390, 500), 390u); // within the capacity
+    EXPECT_EQ(capped_target(300, 900, 500), 500u); // capped
+    EXPECT_EQ(capped_target(484, 630, 500), 500u); // 16 balls below it: a step may still add them
+    EXPECT_EQ(capped_target(300, 250, 500), 250u); // fewer balls
+    EXPECT_EQ(capped_target(520, 520, 500), 520u); // Improve a model past it
+    EXPECT_EQ(capped_target(520, 390, 500), 390u); // Fewer balls from it
+    EXPECT_EQ(capped_target(300, 9000, 0), 9000u); // no capacity known
+    EXPECT_FALSE(at_capacity(484, 500));
+    EXPECT_TRUE(at_capacity(485, 500)); // within 3 %
+    EXPECT_TRUE(at_capacity(9, 12));    // within 3 balls
+    EXPECT_FALSE(at_capacity(9000, 0));
+    for (const size_t balls : {500, 495, 640})
+        try
+        {
+            capped_target(balls, 650, 500);
+            ADD_FAILURE() << "a model of " << balls << " balls at the capacity was given more";
+        }
+        catch (const InvalidInputError& e)
+        {
+            EXPECT_NE(std::string(e.what()).find("the surface holds about 500 well"), std::string::npos) << e.what();
+            EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos);
+        }
+}
+
+TEST(ContinueFrom, MoreDetailPastTheCapacityIsCapped)
+{
+    const ZomeModel& before = annealed_torus();
+    const size_t capacity = surface_capacity(torus(), before.transform);
+    ASSERT_LT(before.nodes.size(), capacity);
+    PipelineOptions o = continuing(40000);
+    o.anneal.target_nodes = 3 * capacity;
+    const PipelineResult r = run_pipeline(torus(), 1, o);
+    EXPECT_TRUE(r.capped);
+    EXPECT_EQ(r.capacity, capacity);
+    EXPECT_EQ(r.asked_nodes, 3 * capacity);
+    EXPECT_LE(r.target_nodes, capacity);
+    EXPECT_TRUE(r.model_valid) << r.validation;
+    const std::string stats = pipeline_stats_json(r);
+    EXPECT_NE(stats.find("\"capacity_note\": \"At this size the surface holds about " + std::to_string(capacity)),
+              std::string::npos);
 }

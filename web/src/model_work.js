@@ -27,6 +27,15 @@ export function gapSpot(summary) {
   return spotAround(summary?.stats?.fidelity?.largest_gap?.at, summary);
 }
 
+/**
+ * Why More detail is off: the model already has as many balls as the shape holds well at its size
+ * (the core's figure and sentence, `capacity_full` of the summary: issue 40), or ''.
+ */
+export function capacityFull(summary) {
+  const text = summary?.capacity_full;
+  return typeof text === 'string' && text ? text[0].toUpperCase() + text.slice(1) + '.' : '';
+}
+
 /** What the note says after a step: balls and largest gap before and after. */
 export function stepText(label, before, after) {
   const gap = (s) => s?.stats?.fidelity?.hausdorff_mm;
@@ -35,9 +44,10 @@ export function stepText(label, before, after) {
   const short = c?.short_of_target
     ? `; it reached ${after.balls} of the ${c.target_nodes} balls asked: at this size the model cannot change more this way`
     : '';
+  const capped = c?.capped && c.capacity_note ? ' ' + c.capacity_note : ''; // the core's sentence
   return `${label}: ${before.balls} → ${after.balls} balls, largest gap ${mm(gap(before))} → ${mm(gap(after))}` +
     (c?.kept_as_it_was ? ' (nothing better found: the model is as it was)' : '') + short +
-    '. Undo puts the previous model back.';
+    '.' + capped + ' Undo puts the previous model back.';
 }
 
 const LABELS = { improve: 'Improve', fewer: 'Fewer balls', more: 'More detail', fix: 'Fix the largest gap',
@@ -66,10 +76,24 @@ export class ModelWork {
     const hint = 'To work on this model (Improve, Fewer balls, …), drop the mesh it was made from, then the model.';
     if (s?.valid && !ofMesh && !this.app.running) this.note(hint);
     else if (this.el('note')?.textContent === hint) this.note('');
+    // More detail on a model that has the balls its shape holds well at this size would make it
+    // worse: the button is off and says why (its title, and the note when it says nothing else).
+    const full = ready ? capacityFull(s) : '';
     for (const kind of Object.keys(LABELS)) {
       const b = this.el(kind);
-      if (b) b.disabled = !ready || (kind === 'fix' && !gapSpot(s)) || (kind === 'here' && !spotAround(this.spot, s));
+      if (b) {
+        b.disabled = !ready || (kind === 'fix' && !gapSpot(s)) || (kind === 'here' && !spotAround(this.spot, s)) ||
+          (kind === 'more' && Boolean(full));
+      }
     }
+    const more = this.el('more');
+    if (more) {
+      this.moreTitle ??= more.title ?? ''; // the page's own title, put back when it applies again
+      more.title = full || this.moreTitle;
+    }
+    if (full && !this.el('note')?.textContent) this.note(full);
+    else if (!full && this.el('note')?.textContent === this.fullShown) this.note('');
+    this.fullShown = full;
     const undo = this.el('undo');
     if (undo) undo.disabled = this.app.running || this.undoStack.length === 0;
   }
@@ -78,6 +102,10 @@ export class ModelWork {
   async step(kind) {
     const before = this.app.shownSummary;
     if (!before || this.app.running) return null;
+    if (kind === 'more' && capacityFull(before)) { // the core would refuse it (window.zomeify.workOn)
+      this.note(capacityFull(before));
+      return null;
+    }
     const saved = (await this.bridge.exportModel('before.zome.json')).bytes;
     const fix = kind === 'fix' || kind === 'here';
     const extra = { continue: true, target_nodes: fix ? 0 : stepTarget(kind, before.balls) };

@@ -3,11 +3,13 @@
 // last step back (on a fake DOM, with a scripted app and bridge).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { ModelWork, stepTarget, gapSpot, stepText } from '../src/model_work.js';
+import { ModelWork, stepTarget, gapSpot, stepText, capacityFull } from '../src/model_work.js';
 import { fakeRoot } from './helpers/fake_dom.mjs';
 
 const summary = (balls, gap) => ({ balls, valid: true,
   stats: { b1_mesh_units: 0.2, fidelity: { hausdorff_mm: gap, largest_gap: { at: [1, 2, 3] } } } });
+
+const MORE_TITLE = 'The same size with 30% more balls, at most as many as the shape holds well at that size';
 
 function scripted() {
   const runs = [], loads = [];
@@ -21,6 +23,7 @@ function scripted() {
   const bridge = { exportModel: async () => ({ bytes: new Uint8Array([1, 2, 3]) }),
     load: async (name, bytes) => { loads.push({ name, bytes }); return { kind: 'model' }; } };
   const root = fakeRoot();
+  root.querySelector('#work-more').title = MORE_TITLE; // as in index.html
   return { work: new ModelWork(root, { app, bridge }), app, runs, loads, el: (id) => root.querySelector('#' + id) };
 }
 
@@ -86,4 +89,37 @@ test('no steps while a run goes, on a model of another shape, or on an invalid o
   app.shownSummary = { ...summary(10, 5), valid: false };
   work.refresh();
   assert.equal(el('work-fix').disabled, true);
+});
+
+test('More detail at the surface\'s capacity: off, and the core\'s sentence says why', async () => {
+  const { work, app, runs, el } = scripted();
+  assert.equal(el('work-more').disabled, false);
+  const full = 'the model has 520 balls and at this size the surface holds about 500 well; more would crumple ' +
+    'the model (the paper\'s fold-overs): for more detail choose a larger size (a new run)';
+  assert.match(capacityFull({ capacity: 500, capacity_full: full }), /^The model has 520 balls .* \(a new run\)\.$/);
+  assert.equal(capacityFull({ capacity: 500 }), '');
+  app.shownSummary = { ...summary(520, 40), capacity: 500, capacity_full: full };
+  work.refresh();
+  assert.equal(el('work-more').disabled, true);
+  assert.equal(el('work-fewer').disabled, false);
+  assert.equal(el('work-improve').disabled, false);
+  assert.match(el('work-more').title, /^The model has 520 balls and at this size the surface holds about 500 well/);
+  assert.match(el('work-note').textContent, /^The model has 520 balls/);
+  assert.equal(await work.step('more'), null); // through the API too: no run, the same sentence
+  assert.match(el('work-note').textContent, /^The model has 520 balls/);
+  assert.equal(runs.length, 0);
+  app.shownSummary = { ...summary(380, 40), capacity: 500 }; // after Fewer balls, or Undo
+  work.refresh();
+  assert.equal(el('work-more').disabled, false);
+  assert.equal(el('work-more').title, MORE_TITLE);
+  assert.equal(el('work-note').textContent, '');
+});
+
+test('a More detail step the core capped at the capacity says so in the core\'s words', () => {
+  const note = 'At this size the surface holds about 500 balls well; more would crumple the model (the paper\'s ' +
+    'fold-overs): the target was kept at 500. For more detail choose a larger size (a new run).';
+  const after = { ...summary(497, 40), stats: { ...summary(497, 40).stats,
+    continued: { capped: true, capacity: 500, target_nodes: 500, capacity_note: note } } };
+  assert.equal(stepText('More detail', summary(420, 50), after),
+    `More detail: 420 → 497 balls, largest gap 50 mm → 40 mm. ${note} Undo puts the previous model back.`);
 });
