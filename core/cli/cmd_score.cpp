@@ -42,6 +42,7 @@ std::string text_report(const ModelScore& s)
                                   std::to_string(s.energy.complexity) + ")");
     line("fold-overs       ", fold_over_summary(s.fold_overs));
     line("parts            ", clearance_summary(s.clearance));
+    line("mirror           ", mirror_summary(s));
     const Fidelity& f = s.fidelity;
     const auto both = [](double b0) { return fixed(b0, 3) + " b0 = " + fixed(b0 * kMmPerB0, 1) + " mm"; };
     line("RMS distance     ", both(f.rms_symmetric) + " (model→mesh " + both(f.model_to_surface.rms) + ", mesh→model " +

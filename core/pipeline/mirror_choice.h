@@ -21,8 +21,8 @@ enum class MirrorMode
 };
 
 //! The largest RMS distance of the shape's mirror image from the shape, in b0 at the run's size,
-//! for which a run is made symmetric (mirror_choice.cpp says how it was chosen).
-inline constexpr double kMirrorToleranceB0 = 0.1;
+//! for which a run is made symmetric (chosen by experiment: docs/mirror.md, "Measured").
+inline constexpr double kMirrorToleranceB0 = 0.05;
 //! How far the best plane's normal may lie from a coordinate axis (degrees) to be taken along it.
 inline constexpr double kMirrorAxisDegrees = 3.0;
 

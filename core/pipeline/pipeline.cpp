@@ -65,7 +65,8 @@ void build_mirrored_z0(PipelineResult& r, const TriangleMesh& surface, const Sur
         if (!z0.report.valid || z0.report.topology.genus != r.surface_genus || z0.report.topology.components != 1 ||
             !corner || !validate(from_model(z0.model)).ok())
             continue;
-        const LatticeMirror lattice{o.mirror->axis, QPhi{0, 2 * static_cast<int64_t>(*corner)}};
+        const LatticeMirror lattice =
+            LatticeMirror::through(o.mirror->axis, QPhi{0, 2 * static_cast<int64_t>(*corner)});
         if (!mirror_mismatch(z0.model, lattice).symmetric())
             continue;
         r.initial = std::move(z0);

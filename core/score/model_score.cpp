@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include <nlohmann/json.hpp>
 
@@ -46,7 +48,29 @@ ModelScore score_model(const ZomeModel& model, const SurfaceProjector& surface, 
     const SurfaceContext fold_context(surface, model.transform);
     score.fold_overs = fold_over_report(mesh, fold_context);
     score.fidelity = measure_fidelity(model, surface, options.fidelity);
+    score.mirror = model_mirror(model);
+    if (score.mirror)
+        score.mirror_at = score.mirror->mirror.coordinate() * model.transform.scale +
+                          model.transform.translation[static_cast<size_t>(score.mirror->mirror.axis)];
     return score;
+}
+
+std::string mirror_summary(const ModelScore& score)
+{
+    if (!score.mirror)
+        return "no balls";
+    const ModelMirror& m = *score.mirror;
+    std::ostringstream s;
+    s << std::setprecision(4);
+    const char axis = "xyz"[m.mirror.axis];
+    if (m.mismatch.symmetric())
+        s << "maps onto itself about " << axis << " = " << score.mirror_at
+          << " (every ball and strut has its mirror image)";
+    else
+        s << "not mirror-symmetric: about the best plane across an axis (" << axis << " = " << score.mirror_at << "), "
+          << m.mismatch.balls << " of " << score.nodes << " balls and " << m.mismatch.struts << " of " << score.struts
+          << " struts have no mirror image";
+    return s.str();
 }
 
 std::string score_json(const ModelScore& score)
@@ -76,6 +100,13 @@ std::string score_json(const ModelScore& score)
         {"smallest_b0", {{"ball_ball", c.ball_ball}, {"ball_strut", c.ball_strut}, {"strut_strut", c.strut_strut}}},
         {"summary", clearance_summary(c)}};
     j["fidelity"] = fidelity_json(score.fidelity);
+    if (score.mirror)
+        j["mirror"] = {{"axis", std::string(1, "xyz"[score.mirror->mirror.axis])},
+                       {"at", score.mirror_at},
+                       {"symmetric", score.mirror->mismatch.symmetric()},
+                       {"balls_without_image", score.mirror->mismatch.balls},
+                       {"struts_without_image", score.mirror->mismatch.struts},
+                       {"summary", mirror_summary(score)}};
     return j.dump(2);
 }
 

@@ -5,6 +5,7 @@
 //! symmetric distance between the model's faces and S (all lengths in b0).
 
 #include <array>
+#include <optional>
 #include <string>
 
 #include "core/anneal/energy/energy_options.h"
@@ -13,6 +14,7 @@
 #include "core/geom/closest_point.h"
 #include "core/score/fidelity.h"
 #include "core/score/fold_over_report.h"
+#include "core/zome/lattice_mirror.h"
 #include "core/zome/model.h"
 #include "core/zome/slots.h"
 
@@ -27,7 +29,14 @@ struct ModelScore
     FoldOverReport fold_overs; //!< faces whose normal points against S's normal at π(barycentre), and where
     Fidelity fidelity;         //!< distances both ways, in b0 (fidelity.h)
     ClearanceReport clearance; //!< clashes between parts and the smallest clearances
+    //! The model's own mirror symmetry (lattice_mirror.h: the best plane across an axis, and what has
+    //! no image about it); `mirror_at` is that plane's coordinate in mesh units.
+    std::optional<ModelMirror> mirror;
+    double mirror_at = 0.0;
 };
+
+//! "maps onto itself about x = 0.25 (every ball and strut has its mirror image)", or how far it is.
+std::string mirror_summary(const ModelScore& score);
 
 struct ScoreOptions
 {

@@ -12,7 +12,7 @@ namespace zomeify {
 ZVec LatticeMirror::reflect(const ZVec& p) const
 {
     std::array<QPhi, 3> t = {p.twice(0), p.twice(1), p.twice(2)};
-    t[axis] = twice_plane + twice_plane - t[axis];
+    t[axis] = sum - t[axis];
     return ZVec::from_twice(t[0], t[1], t[2]);
 }
 
@@ -37,6 +37,31 @@ MirrorMismatch mirror_mismatch(const ZomeModel& model, const LatticeMirror& mirr
             !struts.contains(key(static_cast<uint64_t>(image[s[0]]), static_cast<uint64_t>(image[s[1]]))))
             ++out.struts;
     return out;
+}
+
+std::optional<ModelMirror> model_mirror(const ZomeModel& model)
+{
+    if (model.nodes.empty())
+        return std::nullopt;
+    std::optional<ModelMirror> best;
+    for (int axis = 0; axis < 3; ++axis)
+    {
+        QPhi lo = model.nodes[0].twice(axis), hi = lo;
+        for (const ZVec& p : model.nodes)
+        {
+            const QPhi t = p.twice(axis);
+            if (t.to_double() < lo.to_double())
+                lo = t;
+            if (t.to_double() > hi.to_double())
+                hi = t;
+        }
+        const LatticeMirror mirror{axis, lo + hi};
+        const MirrorMismatch m = mirror_mismatch(model, mirror);
+        if (!best || m.balls < best->mismatch.balls ||
+            (m.balls == best->mismatch.balls && m.struts < best->mismatch.struts))
+            best = ModelMirror{mirror, m};
+    }
+    return best;
 }
 
 } // namespace zomeify

@@ -5,6 +5,7 @@
 //! when c is a lattice coordinate, so a model can be symmetric in exact coordinates.
 
 #include <cstddef>
+#include <optional>
 
 #include "core/zome/model.h"
 #include "core/zome/qphi.h"
@@ -14,15 +15,19 @@ namespace zomeify {
 
 struct LatticeMirror
 {
-    int axis = 0;          //!< 0 = x, 1 = y, 2 = z
-    QPhi twice_plane = {}; //!< twice the plane's coordinate on that axis (b0 = 1, as ZVec::twice)
+    int axis = 0; //!< 0 = x, 1 = y, 2 = z
+    //! The reflection maps twice-coordinate t (ZVec::twice) on the axis to sum − t: sum is four
+    //! times the plane's coordinate (b0 = 1), so planes halfway between lattice layers fit too.
+    QPhi sum = {};
 
+    //! The plane whose twice-coordinate is `twice_plane`.
+    static LatticeMirror through(int axis, QPhi twice_plane) { return {axis, twice_plane + twice_plane}; }
     //! The mirror image of p (exact).
     ZVec reflect(const ZVec& p) const;
     //! Whether p lies on the plane.
-    bool on_plane(const ZVec& p) const { return p.twice(axis) == twice_plane; }
+    bool on_plane(const ZVec& p) const { return p.twice(axis) + p.twice(axis) == sum; }
     //! The plane's coordinate on its axis (b0 = 1).
-    double coordinate() const { return 0.5 * twice_plane.to_double(); }
+    double coordinate() const { return 0.25 * sum.to_double(); }
     friend bool operator==(const LatticeMirror&, const LatticeMirror&) = default;
 };
 
@@ -35,5 +40,15 @@ struct MirrorMismatch
     bool symmetric() const { return balls == 0 && struts == 0; }
 };
 MirrorMismatch mirror_mismatch(const ZomeModel& model, const LatticeMirror& mirror);
+
+//! A model's own mirror symmetry about a plane perpendicular to an axis: for each axis the only
+//! candidate is the plane halfway between the model's extreme balls on it; the best of the three
+//! (fewest balls, then struts, without an image). Empty for a model without balls.
+struct ModelMirror
+{
+    LatticeMirror mirror;
+    MirrorMismatch mismatch;
+};
+std::optional<ModelMirror> model_mirror(const ZomeModel& model);
 
 } // namespace zomeify

@@ -49,14 +49,14 @@ MirroredScene mirrored_torus()
     EXPECT_EQ(z0.report.topology.genus, 1);
     const std::optional<int> corner = mirror_corner_index(z0.report.grid, *options.mirror);
     EXPECT_TRUE(corner.has_value());
-    s.mirror = LatticeMirror{0, QPhi{0, 2 * corner.value_or(0)}};
+    s.mirror = LatticeMirror::through(0, QPhi{0, 2 * corner.value_or(0)});
     s.z0 = std::move(z0.model);
     return s;
 }
 
 TEST(LatticeMirror, ReflectsExactlyAndIsItsOwnInverse)
 {
-    const LatticeMirror m{1, QPhi{3, 4}};
+    const LatticeMirror m = LatticeMirror::through(1, QPhi{3, 4});
     const ZVec p{{5, -7, 2, 9, -4, 1}};
     const ZVec q = m.reflect(p);
     EXPECT_EQ(m.reflect(q), p);
@@ -76,6 +76,25 @@ TEST(LatticeMirror, AMismatchCountsWhatHasNoImage)
     const MirrorMismatch m = mirror_mismatch(moved, s.mirror);
     EXPECT_GE(m.balls, 1U);
     EXPECT_GE(m.struts, 1U);
+}
+
+TEST(LatticeMirror, AModelsOwnPlaneIsFoundHalfwayBetweenItsExtremes)
+{
+    const MirroredScene s = mirrored_torus();
+    const std::optional<ModelMirror> own = model_mirror(s.z0);
+    ASSERT_TRUE(own.has_value());
+    EXPECT_TRUE(own->mismatch.symmetric());
+    EXPECT_EQ(own->mirror, s.mirror);
+    // Half a cell off the lattice's layers: two balls one b1 apart mirror onto each other.
+    ZomeModel pair;
+    pair.nodes = {ZVec{{0, 0, 0, 0, 0, 0}}, ZVec{{2, 0, 0, 0, 0, 0}}};
+    pair.struts = {{0, 1}};
+    const std::optional<ModelMirror> halfway = model_mirror(pair);
+    ASSERT_TRUE(halfway.has_value());
+    EXPECT_EQ(halfway->mirror.axis, 0);
+    EXPECT_TRUE(halfway->mismatch.symmetric());
+    EXPECT_NEAR(halfway->mirror.coordinate(), 0.5 * kPhi, 1e-12);
+    EXPECT_FALSE(model_mirror(ZomeModel{}).has_value());
 }
 
 TEST(MirrorCells, TheGridHasABoundaryOnThePlaneAndSymmetricCells)
