@@ -1,5 +1,5 @@
 // Issue 41 on the page: a mirror-symmetric shape (the scorpion) turns the switch on with the core's
-// sentence; a run with it gives a model that maps onto itself, the same as the native CLI's
+// sentence; a run with it gives a model that maps onto itself (its parts listed by half), the same as the native CLI's
 // `run --mirror auto` with the same settings (one thread, a proposal budget: the same model); the
 // bunny, not symmetric, turns it off and says why.
 import fs from 'node:fs';
@@ -28,6 +28,7 @@ test('mirror: the scorpion is built symmetric, as the CLI builds it; the bunny i
   expect(s.stats.mirror.used).toBe(true);
   expect(s.stats.mirror.model).toEqual({ balls_without_image: 0, struts_without_image: 0, symmetric: true });
   await expect(page.locator('#quality')).toContainText('Mirror-symmetric (about a plane across the x axis)');
+  await expect(page.locator('#parts-halves')).toContainText(/^Mirror-symmetric: build one half \(\d+ balls, \d+ struts\) twice/);
 
   fs.mkdirSync(OUT, { recursive: true });
   const out = path.join(OUT, 'mirror-scorpion.zome.json');

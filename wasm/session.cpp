@@ -20,6 +20,7 @@
 #include "core/mesh/validate.h"
 #include "core/parts/kit_fit.h"
 #include "core/parts/kits.h"
+#include "core/parts/mirror_halves.h"
 #include "core/parts/parts_list.h"
 #include "core/parts/parts_report.h"
 #include "core/pipeline/kit_fit_plan.h"
@@ -583,7 +584,10 @@ std::string Session::parts(const std::string& have) const
         const ZomeModel m = model();
         if (m.nodes.empty())
             throw InvalidInputError("no model yet");
-        return parts_report_json(parts_list(m), owned);
+        nlohmann::json doc = nlohmann::json::parse(parts_report_json(parts_list(m), owned));
+        if (const std::optional<MirrorHalves> halves = mirror_halves(m)) // the parts by half (mirror_halves.h)
+            doc["mirror"] = mirror_halves_json(*halves);
+        return doc.dump();
     });
 }
 

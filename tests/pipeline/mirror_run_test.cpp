@@ -8,6 +8,8 @@
 #include <gtest/gtest.h>
 
 #include "core/base/errors.h"
+#include "core/parts/mirror_halves.h"
+#include "core/parts/parts_list.h"
 #include "core/pipeline/pipeline.h"
 #include "tests/support/geom_fixtures.h"
 
@@ -47,6 +49,13 @@ void expect_symmetric_model(const PipelineResult& r, long long genus)
     EXPECT_EQ(r.clearance.total(), 0U);
     EXPECT_EQ(r.fold_overs.count(), 0U);
     EXPECT_GT(r.anneal->stats.commits, 1000U); // it did change the model
+    // Its parts by half: two halves and the middle make the whole, kind by kind.
+    const std::optional<MirrorHalves> halves = mirror_halves(r.model);
+    ASSERT_TRUE(halves.has_value());
+    const PartCounts whole = part_counts(parts_list(r.model));
+    for (size_t k = 0; k < whole.size(); ++k)
+        EXPECT_EQ(2 * halves->half[k] + halves->middle[k], whole[k]) << k;
+    EXPECT_GT(halves->middle[kStrutKindCount], 0U); // a torus across the plane has balls on it
     // The plane in mesh units is the shape's.
     const AxisPlane plane = mesh_plane(*r.mirror->used, r.model.transform);
     EXPECT_EQ(plane.axis, r.mirror->along->axis);
@@ -84,6 +93,7 @@ TEST(MirrorRun, ALopsidedShapeIsReportedAndBuiltAsWithoutTheMirror)
     o.mirror = MirrorMode::Off;
     const PipelineResult without = run_pipeline(lopsided, 1, o);
     EXPECT_EQ(with.model, without.model);
+    EXPECT_FALSE(mirror_halves(with.model).has_value()); // no halves for a model that is not symmetric
 }
 
 TEST(MirrorRun, AContinuedRunRefusesIt)

@@ -31,6 +31,18 @@ export function kitPlanText(plan) {
   return `Kit plan: ${kits} (${plan.parts_bought} parts bought)`;
 }
 
+/**
+ * A mirror-symmetric model's parts by half (core/parts/mirror_halves.h): "Mirror-symmetric: build one
+ * half (173 balls, 443 struts) twice, the second mirrored, then the middle (24 balls, 36 struts)
+ * on the plane or across it." '' for any other model.
+ */
+export function halvesText(mirror) {
+  if (!mirror) return '';
+  const part = (c) => `${c.balls} balls, ${c.strut_count} struts`;
+  return `Mirror-symmetric: build one half (${part(mirror.half)}) twice, the second mirrored, then the middle ` +
+    `(${part(mirror.middle)}) on the plane or across it.`;
+}
+
 function cell(tag, text, cls) {
   const e = document.createElement(tag);
   e.textContent = text;
@@ -43,6 +55,7 @@ export class PartsTable {
     this.table = root.querySelector('#parts-table');
     this.totals = root.querySelector('#parts-totals');
     this.kits = root.querySelector('#kit-plan');
+    this.halves = root.querySelector('#parts-halves');
     this.onHover = onHover;
     this.report = null;
   }
@@ -52,6 +65,7 @@ export class PartsTable {
     this.table.replaceChildren();
     this.totals.textContent = '';
     this.kits.textContent = '';
+    if (this.halves) this.halves.textContent = '';
   }
 
   /** @param {object} report parts_report_json (core/parts/parts_report.h) */
@@ -83,5 +97,6 @@ export class PartsTable {
     this.table.replaceChildren(...rows);
     this.totals.textContent = totalsText(report);
     this.kits.textContent = kitPlanText(report.kit_plan);
+    if (this.halves) this.halves.textContent = halvesText(report.mirror);
   }
 }

@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { partRows, totalsText, kitPlanText, SWATCH, PartsTable } from '../src/parts_table.js';
+import { partRows, totalsText, kitPlanText, SWATCH, PartsTable, halvesText } from '../src/parts_table.js';
 import { COLOURS, KIND_COLOUR, BALL_RADIUS } from '../src/render/scene.js';
 import { fakeRoot, fakeDocument, setGlobal } from './helpers/fake_dom.mjs';
 
@@ -68,4 +68,11 @@ test('the table on the page: hovering a strut row highlights its kind; leaving c
   } finally {
     restore();
   }
+});
+
+test('a mirror-symmetric model\'s parts by half; nothing for another model', () => {
+  const mirror = { axis: 'x', half: { balls: 173, strut_count: 443 }, middle: { balls: 24, strut_count: 36 } };
+  assert.equal(halvesText(mirror), 'Mirror-symmetric: build one half (173 balls, 443 struts) twice, the second ' +
+    'mirrored, then the middle (24 balls, 36 struts) on the plane or across it.');
+  assert.equal(halvesText(undefined), '');
 });
