@@ -185,7 +185,7 @@ expect_error "from and size"   '--from continues a model at its own size' run "$
 # --mirror auto: the torus is mirror-symmetric and its model maps onto itself; the bunny is not, and
 # is built as without the mirror; a bad value and --from are refused.
 expect_output "run mirror"      'Mirror-symmetric about [xyz] = .*Every change was made with its mirror image: the model maps onto itself\.' \
-  run "$shared/data/meshes/torus.obj" --mirror auto --proposals 100000 --threads 1 -o "$tmp/m.zome.json"
+  run "$shared/data/meshes/torus.obj" --mirror auto --proposals 30000 --threads 1 -o "$tmp/m.zome.json"
 expect_output "parts by half"   '^mirror-symmetric \(about a plane across the [xyz] axis\): build one half, [0-9]+ balls, [0-9]+ struts .*twice' parts "$tmp/m.zome.json"
 expect_output "run mirror bunny" 'Not made mirror-symmetric' run "$mesh" --mirror auto --initial-only -o "$tmp/x.zome.json"
 expect_error "mirror value"     "--mirror wants auto or off, got 'on'" run "$mesh" --mirror on -o "$tmp/x.zome.json"
