@@ -123,3 +123,24 @@ TEST(RunSettings, PipelineOptionsFollowTheSettings)
     s.seconds = -1;
     EXPECT_THROW(pipeline_options(s), InvalidInputError);
 }
+
+TEST(RunSettings, MirrorIsAutoOrOffAndReachesThePipeline)
+{
+    EXPECT_EQ(run_settings_from_json("{}").mirror, MirrorMode::Off);
+    const RunSettings s = run_settings_from_json(R"({"mirror": "auto"})");
+    EXPECT_EQ(s.mirror, MirrorMode::Auto);
+    EXPECT_EQ(pipeline_options(s).mirror, MirrorMode::Auto);
+    EXPECT_EQ(run_settings_from_json(run_settings_json(s)).mirror, MirrorMode::Auto); // round trip
+    for (const char* bad : {R"({"mirror": "on"})", R"({"mirror": true})", R"({"mirror": 1})"})
+    {
+        try
+        {
+            run_settings_from_json(bad);
+            ADD_FAILURE() << bad << " was accepted";
+        }
+        catch (const InvalidInputError& e)
+        {
+            EXPECT_STREQ(e.what(), "run option 'mirror' must be \"auto\" or \"off\"");
+        }
+    }
+}

@@ -127,7 +127,7 @@ public:
                 corners[i] = reflect(f.corners[f.size - 1 - i]); // reversed: the image keeps its outside out
             m.add_face(std::span<const ZVec>(corners.data(), f.size));
         }
-        return m.overflowed() ? Rejection::Overflow : Rejection::None;
+        return m.overflowed() || overflowed_ ? Rejection::Overflow : Rejection::None;
     }
 
     // Whether c and its image m can be applied together (c and m each valid on their own).
@@ -158,14 +158,17 @@ public:
     }
 
 private:
+    // Beyond int32 no node can be there: the change is then refused (image() reports Overflow), never
+    // taken for its own image.
     ZVec reflect(const ZVec& p) const noexcept
     {
         try
         {
             return mirror_.reflect(p);
         }
-        catch (const std::exception&) // beyond int32: no node can be there
+        catch (const std::exception&)
         {
+            overflowed_ = true;
             return p;
         }
     }
@@ -248,6 +251,7 @@ private:
     const ZomeMesh& mesh_;
     const LatticeMirror& mirror_;
     Claims& claims_;
+    mutable bool overflowed_ = false;
 };
 
 // Appends m to c.
