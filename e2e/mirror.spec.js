@@ -1,7 +1,7 @@
 // Issue 41 on the page: a mirror-symmetric shape (the scorpion) turns the switch on with the core's
 // sentence; a run with it gives a model that maps onto itself (its parts listed by half), the same as the native CLI's
 // `run --mirror auto` with the same settings (one thread, a proposal budget: the same model); the
-// bunny, not symmetric, turns it off and says why.
+// bunny, not symmetric, turns it off and says why. The build steps build both halves alike, as the CLI's `steps`.
 import fs from 'node:fs';
 import path from 'node:path';
 import { test, expect } from '@playwright/test';
@@ -38,6 +38,14 @@ test('mirror: the scorpion is built symmetric, as the CLI builds it; the bunny i
   expect({ balls: s.balls, struts: s.struts, commits: s.stats.commits, kinds: s.stats.struts_by_kind })
     .toEqual({ balls: native.nodes.length, struts: native.struts.length, commits: native.stats.commits,
       kinds: native.stats.struts_by_kind });
+
+  // The build steps build both halves alike, as the CLI's `steps` of the same model.
+  const plan = await page.evaluate(() => window.zomeify.openBuildView());
+  const nativePlan = JSON.parse(cli(['steps', out, '--json']));
+  expect(plan.mirror).toEqual(nativePlan.mirror);
+  expect(plan.mirror.axis).toBe('x');
+  expect(plan.steps.map((st) => st.balls.length)).toEqual(nativePlan.steps.map((st) => st.balls.length));
+  await expect(page.locator('#build-figures')).toContainText('Both halves are built alike');
 
   await pickFile(page, 'bunny.obj', fs.readFileSync(path.join(MESHES, 'bunny.obj')));
   await expect(page.locator('#mirror-note')).toContainText('Not made mirror-symmetric', { timeout: 60_000 });

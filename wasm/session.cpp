@@ -599,6 +599,7 @@ std::string Session::build_plan(const std::string& up) const
             throw InvalidInputError("no model yet");
         PlanOptions options;
         options.up = parse_up_axis(up);
+        options.mirror = building_mirror(m, options.up); // a symmetric model: both halves alike
         const BuildPlan plan = plan_assembly(m, options);
         nlohmann::json out = nlohmann::json::parse(plan_json(m, plan, plan_breadth_first(m, options).figures));
         out["html"] = steps_html(m, plan, surface_name_.empty() ? "model" : surface_name_);

@@ -1,13 +1,15 @@
 // The planner is a greedy walk over the strut graph: the next ball is the one that closes the most
 // struts onto what stands (two or more make a triangle or a braced corner), then the lowest. A ball
 // brings every strut to balls already placed, so each strut lands in exactly one step and the build
-// is one piece after every step.
+// is one piece after every step. Building both halves alike, a ball's mirror image joins it in its step:
+// the placed set stays symmetric, so the image attaches where the ball does.
 #include "core/assembly/assembly_plan.h"
 
 #include <algorithm>
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <map>
 #include <numeric>
 
 #include "core/base/errors.h"
@@ -76,9 +78,11 @@ public:
         return c;
     }
     int parts_in_step() const { return parts_; }
-    bool step_full_for(uint32_t v) const
+    bool step_full_for(uint32_t v) const { return step_full_for_parts(cost(v)); }
+    //! Whether the open step should close before a placement that brings `parts` parts.
+    bool step_full_for_parts(int parts) const
     {
-        return parts_ >= options_.min_parts || (parts_ > 0 && parts_ + cost(v) > options_.max_parts);
+        return parts_ >= options_.min_parts || (parts_ > 0 && parts_ + parts > options_.max_parts);
     }
     //! A ball of the open step with fewer than two struts so far.
     bool is_weak(uint32_t v) const { return step_of_[v] == current() && held_[v] < 2; }
@@ -144,10 +148,58 @@ void require_one_piece(const ZomeModel& model, size_t reached)
                                 " balls are not joined to the lowest ball); a build plan needs one connected model");
 }
 
+//! The first balls of a plan that builds both halves alike: the start, a shortest path of struts
+//! to its image, then the images of the path's balls: a symmetric set, each ball joined to one before
+//! it (a ball on the plane is a path of one). Empty when the image cannot be reached.
+std::vector<uint32_t> symmetric_seed(const Adjacency& adj, const std::vector<uint32_t>& image, uint32_t start)
+{
+    std::vector<int64_t> previous(adj.size(), -1);
+    previous[start] = start;
+    std::deque<uint32_t> queue{start};
+    while (!queue.empty() && previous[image[start]] < 0)
+    {
+        const uint32_t v = queue.front();
+        queue.pop_front();
+        for (const Link& l : adj[v])
+            if (previous[l.ball] < 0)
+            {
+                previous[l.ball] = v;
+                queue.push_back(l.ball);
+            }
+    }
+    if (previous[image[start]] < 0)
+        return {};
+    std::vector<uint32_t> path{image[start]};
+    while (path.back() != start)
+        path.push_back(static_cast<uint32_t>(previous[path.back()]));
+    std::reverse(path.begin(), path.end());
+    std::vector<uint32_t> seed = path;
+    for (size_t i = 1; i + 1 < path.size(); ++i)
+        seed.push_back(image[path[i]]); // joined to the image of the ball before it, already in the seed
+    return seed;
+}
+
+//! Each ball's mirror image under options.mirror (identity without one); throws for a plane the
+//! planner cannot pair on.
+std::vector<uint32_t> pairing(const ZomeModel& model, const PlanOptions& options)
+{
+    std::vector<uint32_t> image(model.nodes.size());
+    std::iota(image.begin(), image.end(), 0u);
+    if (!options.mirror)
+        return image;
+    if (options.mirror->axis == options.up.axis)
+        throw InvalidInputError("the halves cannot be built alike about a plane across the up axis");
+    const std::optional<std::vector<uint32_t>> mapped = mirror_ball_images(model, *options.mirror);
+    if (!mapped || !mirror_mismatch(model, *options.mirror).symmetric())
+        throw InvalidInputError("the model does not map onto itself about that plane; its halves differ");
+    return *mapped;
+}
+
 BuildPlan finish_plan(const ZomeModel& model, const PlanOptions& options, std::vector<BuildStep> steps)
 {
     BuildPlan plan;
     plan.up = options.up;
+    plan.mirror = options.mirror;
     plan.steps = std::move(steps);
     plan.figures = plan_figures(model, plan.steps, options.up);
     return plan;
@@ -178,19 +230,51 @@ std::vector<double> ball_heights(const ZomeModel& model, UpAxis up)
     return h;
 }
 
-BuildPlan plan_assembly(const ZomeModel& model, const PlanOptions& options)
+std::optional<LatticeMirror> building_mirror(const ZomeModel& model, UpAxis up)
 {
-    const Adjacency adj = adjacency(model);
-    const std::vector<double> h = ball_heights(model, options.up);
-    StepCutter cut(adj, options);
+    const std::optional<ModelMirror> own = model_mirror(model);
+    if (!own)
+        return std::nullopt;
+    std::vector<int> axes{own->mirror.axis};
+    for (int axis = 0; axis < 3; ++axis)
+        if (axis != own->mirror.axis)
+            axes.push_back(axis);
+    for (int axis : axes)
+        if (axis != up.axis)
+            if (const LatticeMirror plane = middle_plane(model, axis); mirror_mismatch(model, plane).symmetric())
+                return plane;
+    return std::nullopt;
+}
+
+namespace {
+
+//! The greedy walk from the balls of `seed` (placed first, as one step), each next ball with its image.
+std::vector<BuildStep> walk(const ZomeModel& model, const Adjacency& adj, const std::vector<uint32_t>& image,
+                            const std::vector<double>& h, const PlanOptions& sizes, const std::vector<uint32_t>& seed)
+{
+    StepCutter cut(adj, sizes);
     std::vector<int> held(adj.size(), 0); // struts from each unplaced ball to placed balls
+    size_t placed = 0;
     auto place = [&](uint32_t v) {
         cut.place(v);
+        ++placed;
         for (const Link& l : adj[v])
             ++held[l.ball];
     };
-    place(lowest_ball(model, h));
-    size_t placed = 1;
+    for (uint32_t v : seed)
+        if (!cut.placed(v))
+            place(v);
+    // Parts that placing v (and its image, which the placed set's symmetry lets attach too) bring.
+    auto parts_of = [&](uint32_t v) {
+        int parts = cut.cost(v);
+        if (image[v] != v)
+        {
+            parts += cut.cost(image[v]);
+            for (const Link& l : adj[v])
+                parts += l.ball == image[v]; // the strut across the plane comes with the image
+        }
+        return parts;
+    };
     while (placed < adj.size())
     {
         // Score: one bracing strut is worth two b0 of height; a lone strut (a ball that dangles)
@@ -218,14 +302,64 @@ BuildPlan plan_assembly(const ZomeModel& model, const PlanOptions& options)
         if (best_score == std::numeric_limits<double>::infinity())
             break;
         // Keep a step open past its size while its last ball dangles and the next one braces it.
-        const bool keep_open = best_braces && cut.parts_in_step() + cut.cost(best) <= options.max_parts;
-        if (cut.step_full_for(best) && !keep_open)
+        const int parts = parts_of(best);
+        const bool keep_open = best_braces && cut.parts_in_step() + parts <= sizes.max_parts;
+        if (cut.step_full_for_parts(parts) && !keep_open)
             cut.close_step();
         place(best);
-        ++placed;
+        if (!cut.placed(image[best]))
+            place(image[best]);
     }
     require_one_piece(model, placed);
-    return finish_plan(model, options, cut.finish());
+    return cut.finish();
+}
+
+//! The lowest ball on the mirror plane or joined to its image (one ball or one strut across the
+//! middle); adj.size() when there is none.
+uint32_t lowest_middle_ball(const ZomeModel& model, const Adjacency& adj, const std::vector<uint32_t>& image,
+                            const std::vector<double>& h)
+{
+    uint32_t middle = static_cast<uint32_t>(adj.size());
+    for (uint32_t v = 0; v < adj.size(); ++v)
+    {
+        bool across = image[v] == v;
+        for (const Link& l : adj[v])
+            across = across || l.ball == image[v];
+        if (across && (middle == adj.size() || h[v] < h[middle] || (h[v] == h[middle] && before(model, v, middle))))
+            middle = v;
+    }
+    return middle;
+}
+
+} // namespace
+
+BuildPlan plan_assembly(const ZomeModel& model, const PlanOptions& options)
+{
+    const Adjacency adj = adjacency(model);
+    const std::vector<uint32_t> image = pairing(model, options);
+    const std::vector<double> h = ball_heights(model, options.up);
+    const uint32_t lowest = lowest_ball(model, h);
+    if (!options.mirror)
+        return finish_plan(model, options, walk(model, adj, image, h, options, {lowest}));
+    // Building both halves alike, a step is the same few parts on each side: twice the parts. The
+    // seed is a symmetric piece: from the middle (a ball on the plane or a strut across it) or from the
+    // lowest ball with a path to its image (a chain that may dangle); the plan with the smaller
+    // overhang is kept, the middle's on a tie.
+    PlanOptions sizes = options;
+    sizes.min_parts *= 2;
+    sizes.max_parts *= 2;
+    std::vector<uint32_t> seed = symmetric_seed(adj, image, lowest);
+    if (seed.empty())
+        seed = {lowest}; // the image is in another piece: require_one_piece says so
+    BuildPlan plan = finish_plan(model, options, walk(model, adj, image, h, sizes, seed));
+    if (const uint32_t middle = lowest_middle_ball(model, adj, image, h); middle < adj.size() && middle != lowest)
+    {
+        BuildPlan from_middle =
+            finish_plan(model, options, walk(model, adj, image, h, sizes, symmetric_seed(adj, image, middle)));
+        if (from_middle.figures.max_overhang_b0 <= plan.figures.max_overhang_b0)
+            plan = std::move(from_middle);
+    }
+    return plan;
 }
 
 BuildPlan plan_breadth_first(const ZomeModel& model, const PlanOptions& options)
@@ -343,6 +477,26 @@ std::string check_plan(const ZomeModel& model, const BuildPlan& plan)
     }
     if (built != n)
         return std::to_string(n - built) + " balls are in no step";
+    if (plan.mirror)
+    {
+        const std::optional<std::vector<uint32_t>> image = mirror_ball_images(model, *plan.mirror);
+        if (!image)
+            return "the model does not map onto itself about the plan's plane";
+        for (size_t s = 0; s < plan.steps.size(); ++s)
+            for (uint32_t v : plan.steps[s].balls)
+                if (step_of[(*image)[v]] != static_cast<int>(s))
+                    return "ball " + std::to_string(v) + " of step " + std::to_string(s + 1) +
+                           " is not built with its mirror image";
+        std::map<std::pair<uint32_t, uint32_t>, size_t> strut_index;
+        for (size_t si = 0; si < model.struts.size(); ++si)
+            strut_index[std::minmax(model.struts[si][0], model.struts[si][1])] = si;
+        for (size_t si = 0; si < model.struts.size(); ++si)
+        {
+            const auto it = strut_index.find(std::minmax((*image)[model.struts[si][0]], (*image)[model.struts[si][1]]));
+            if (it == strut_index.end() || strut_step[it->second] != strut_step[si])
+                return "strut " + std::to_string(si) + " is not built with its mirror image";
+        }
+    }
     for (size_t si = 0; si < strut_step.size(); ++si)
         if (strut_step[si] < 0)
             return "strut " + std::to_string(si) + " is in no step";

@@ -6,9 +6,11 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/zome/lattice_mirror.h"
 #include "core/zome/model.h"
 
 namespace zomeify {
@@ -42,6 +44,8 @@ struct PlanFigures
 struct BuildPlan
 {
     UpAxis up;
+    //! Set when the steps build both halves alike: every step is its own mirror image about this plane.
+    std::optional<LatticeMirror> mirror;
     std::vector<BuildStep> steps;
     PlanFigures figures;
 };
@@ -51,7 +55,15 @@ struct PlanOptions
     UpAxis up;
     int min_parts = 6;  //!< a step closes once it has at least this many parts...
     int max_parts = 12; //!< ...and before a ball would take it past this many
+    //! Build both halves alike (issue 41): each ball goes into its step with its mirror image, so that
+    //! every step is symmetric. A plane across an axis other than up that the model maps onto exactly
+    //! (building_mirror); plan_assembly throws InvalidInputError for any other.
+    std::optional<LatticeMirror> mirror;
 };
+
+//! The plane to build a model's halves alike about: one across an axis other than `up` that the model
+//! maps onto exactly (its own plane, model_mirror, first); nothing for an asymmetric model.
+std::optional<LatticeMirror> building_mirror(const ZomeModel& model, UpAxis up);
 
 //! The planner's order. Throws InvalidInputError for an empty or disconnected model or bad indices.
 BuildPlan plan_assembly(const ZomeModel& model, const PlanOptions& options = {});
@@ -66,7 +78,8 @@ std::vector<double> ball_heights(const ZomeModel& model, UpAxis up);
 PlanFigures plan_figures(const ZomeModel& model, const std::vector<BuildStep>& steps, UpAxis up);
 
 //! Empty when every ball and strut is in exactly one step and every step attaches to earlier
-//! ones (the first holds one piece); otherwise a one-line description of the first fault.
+//! ones (the first holds one piece), and with plan.mirror every step is its own mirror image;
+//! otherwise a one-line description of the first fault.
 std::string check_plan(const ZomeModel& model, const BuildPlan& plan);
 
 } // namespace zomeify

@@ -51,11 +51,24 @@ std::array<size_t, kStrutKindCount> step_strut_counts(const std::vector<StrutKin
     return counts;
 }
 
+std::string halves_alike_text(const BuildPlan& plan)
+{
+    if (!plan.mirror)
+        return {};
+    return std::string("Both halves are built alike: each step adds its parts with their mirror images about the "
+                       "plane across the ") +
+           "xyz"[plan.mirror->axis] + " axis.";
+}
+
 std::string plan_json(const ZomeModel& model, const BuildPlan& plan, const PlanFigures& naive)
 {
     const std::vector<StrutKind> kinds = strut_kinds(model);
     std::ostringstream os;
-    os << "{\"up\":\"" << up_axis_name(plan.up) << "\",\"nodes\":[";
+    os << "{\"up\":\"" << up_axis_name(plan.up) << "\",";
+    if (plan.mirror)
+        os << "\"mirror\":{\"axis\":\""
+           << "xyz"[plan.mirror->axis] << "\",\"coordinate_b0\":" << number(plan.mirror->coordinate()) << "},";
+    os << "\"nodes\":[";
     for (size_t i = 0; i < model.nodes.size(); ++i)
     {
         os << (i ? ",[" : "[");
@@ -100,6 +113,8 @@ std::string plan_text(const ZomeModel& model, const BuildPlan& plan, const PlanF
     std::ostringstream os;
     os << "Build plan, " << up_axis_name(plan.up) << " up: " << model.nodes.size() << " balls and "
        << model.struts.size() << " struts in " << plan.steps.size() << " steps.\n";
+    if (plan.mirror)
+        os << halves_alike_text(plan) << "\n";
     for (size_t s = 0; s < plan.steps.size(); ++s)
     {
         const BuildStep& st = plan.steps[s];

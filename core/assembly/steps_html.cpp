@@ -159,7 +159,10 @@ std::string steps_html(const ZomeModel& model, const BuildPlan& plan, const std:
     os << "<h1>Build steps: " << escape(title) << "</h1>\n<p>" << model.nodes.size() << " balls and "
        << model.struts.size() << " struts in " << plan.steps.size() << " steps, " << up_axis_name(plan.up)
        << " up. Each picture shows what stands in grey, this step's struts in their colours and its new balls"
-       << " as white circles; grey dots are the balls they attach to.</p>\n";
+       << " as white circles; grey dots are the balls they attach to.";
+    if (plan.mirror)
+        os << ' ' << halves_alike_text(plan);
+    os << "</p>\n";
     for (size_t s = 0; s < plan.steps.size(); ++s)
     {
         const BuildStep& st = plan.steps[s];

@@ -25,6 +25,7 @@ int cmd_steps(const CommandArgs& argv)
             throw InvalidInputError("steps writes .html pages with -o, not '" + out + "'");
     const std::string& path = args.positional()[0];
     const ZomeModel model = read_model_warning_of_clashes(path);
+    options.mirror = building_mirror(model, options.up); // a symmetric model: both halves alike
     const BuildPlan plan = plan_assembly(model, options);
     const PlanFigures naive = plan_breadth_first(model, options).figures;
     for (const std::string& out : args.values("-o"))

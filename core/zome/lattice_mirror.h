@@ -5,7 +5,9 @@
 //! when c is a lattice coordinate, so a model can be symmetric in exact coordinates.
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 #include "core/zome/model.h"
 #include "core/zome/qphi.h"
@@ -40,6 +42,13 @@ struct MirrorMismatch
     bool symmetric() const { return balls == 0 && struts == 0; }
 };
 MirrorMismatch mirror_mismatch(const ZomeModel& model, const LatticeMirror& mirror);
+
+//! The ball each ball of the model maps to under the mirror; nothing when some ball has no image.
+std::optional<std::vector<uint32_t>> mirror_ball_images(const ZomeModel& model, const LatticeMirror& mirror);
+
+//! The plane across `axis` halfway between the model's extreme balls on it: the only plane across
+//! that axis a model can map onto. The model must have balls.
+LatticeMirror middle_plane(const ZomeModel& model, int axis);
 
 //! A model's own mirror symmetry about a plane perpendicular to an axis: for each axis the only
 //! candidate is the plane halfway between the model's extreme balls on it; the best of the three

@@ -187,6 +187,7 @@ expect_error "from and size"   '--from continues a model at its own size' run "$
 expect_output "run mirror"      'Mirror-symmetric about [xyz] = .*Every change was made with its mirror image: the model maps onto itself\.' \
   run "$shared/data/meshes/torus.obj" --mirror auto --proposals 30000 --threads 1 -o "$tmp/m.zome.json"
 expect_output "parts by half"   '^mirror-symmetric \(about a plane across the [xyz] axis\): build one half, [0-9]+ balls, [0-9]+ struts .*twice' parts "$tmp/m.zome.json"
+expect_output "steps by halves"  '^Both halves are built alike: each step adds its parts with their mirror images about the plane across the [xz] axis\.$' steps "$tmp/m.zome.json"
 expect_output "run mirror bunny" 'Not made mirror-symmetric' run "$mesh" --mirror auto --initial-only -o "$tmp/x.zome.json"
 expect_error "mirror value"     "--mirror wants auto or off, got 'on'" run "$mesh" --mirror on -o "$tmp/x.zome.json"
 expect_error "mirror from"      '--mirror works on a new run, not with --from' run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --mirror auto -o "$tmp/x.zome.json"

@@ -48,11 +48,13 @@ export function stepText(plan, k) {
   return `Step ${k + 1} of ${plan.steps.length}: ${n(step.balls.length, 'ball')}, ${n(step.struts.length, 'strut')}, ${where}.`;
 }
 
-/** The plan's figures in words. */
+/** The plan's figures in words, and for a symmetric model that both halves are built alike (core plan_report). */
 export function figuresText(plan) {
   const f = plan.figures;
+  const halves = plan.mirror ? ' Both halves are built alike: each step adds its parts with their mirror images ' +
+    `about the plane across the ${plan.mirror.axis} axis.` : '';
   return `${plan.steps.length} steps; largest overhang ${Math.round(f.max_overhang_mm)} mm; ` +
-    `${Math.round(100 * f.two_strut_share)}% of steps end with every new ball on two struts.`;
+    `${Math.round(100 * f.two_strut_share)}% of steps end with every new ball on two struts.${halves}`;
 }
 
 export class BuildView {

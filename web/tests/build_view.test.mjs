@@ -32,4 +32,7 @@ test('step text, rows and counts', () => {
   assert.deepEqual(countsThrough(plan, 0), { balls: 4, struts: 5 });
   assert.deepEqual(countsThrough(plan, 1), { balls: 5, struts: 7 });
   assert.equal(figuresText(plan), '2 steps; largest overhang 46 mm; 100% of steps end with every new ball on two struts.');
+  assert.equal(figuresText({ ...plan, mirror: { axis: 'z', coordinate_b0: 0 } }), '2 steps; largest overhang 46 mm; ' +
+    '100% of steps end with every new ball on two struts. Both halves are built alike: each step adds its parts ' +
+    'with their mirror images about the plane across the z axis.');
 });
