@@ -39,6 +39,18 @@ test('mirror: the scorpion is built symmetric, as the CLI builds it; the bunny i
     .toEqual({ balls: native.nodes.length, struts: native.struts.length, commits: native.stats.commits,
       kinds: native.stats.struts_by_kind });
 
+  // The plane is drawn in the view where the CLI's parts report puts it; its view option hides it.
+  const nativeParts = JSON.parse(cli(['parts', out, '--json']));
+  expect(await page.evaluate(() => window.zomeify.mirrorPlane()))
+    .toEqual({ axis: 0, at: nativeParts.mirror.coordinate_b0 });
+  await expect(page.locator('#mirror-plane-option')).toBeVisible();
+  const shown = await page.evaluate(() => window.zomeify.colourCoverage());
+  await page.locator('#show-mirror-plane').uncheck();
+  const hidden = await page.evaluate(() => window.zomeify.colourCoverage());
+  expect(hidden.background - shown.background, 'the translucent plane covers some of the background')
+    .toBeGreaterThan(0.02);
+  await page.locator('#show-mirror-plane').check();
+
   // The build steps build both halves alike, as the CLI's `steps` of the same model.
   const plan = await page.evaluate(() => window.zomeify.openBuildView());
   const nativePlan = JSON.parse(cli(['steps', out, '--json']));
@@ -50,5 +62,7 @@ test('mirror: the scorpion is built symmetric, as the CLI builds it; the bunny i
   await pickFile(page, 'bunny.obj', fs.readFileSync(path.join(MESHES, 'bunny.obj')));
   await expect(page.locator('#mirror-note')).toContainText('Not made mirror-symmetric', { timeout: 60_000 });
   await expect(page.locator('#mirror')).not.toBeChecked();
+  expect(await page.evaluate(() => window.zomeify.mirrorPlane())).toBeNull(); // the scorpion's model is gone
+  await expect(page.locator('#mirror-plane-option')).toBeHidden();
   await expectNoPageErrors(errors);
 });

@@ -85,6 +85,7 @@ std::string mirror_halves_text(const MirrorHalves& h)
 nlohmann::json mirror_halves_json(const MirrorHalves& h)
 {
     return {{"axis", std::string(1, "xyz"[h.mirror.axis])},
+            {"coordinate_b0", h.mirror.coordinate()},
             {"half", counts_json(h.half)},
             {"middle", counts_json(h.middle)}};
 }

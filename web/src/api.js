@@ -55,6 +55,8 @@ export function installApi(app, { ready, warmedUp, info, buildView = null, work 
     /** Fractions of the canvas in each strut colour (a pixel check of the rendering). */
     colourCoverage: () => app.viewer.colourCoverage(),
     fit: () => app.viewer.fit(),
+    /** The mirror plane drawn in the view ({axis: 0..2, at} in Zome units), or null. */
+    mirrorPlane: () => app.viewer.mirrorPlane,
     /** The camera: {position, target} (mesh units); tests check that a drag or a pinch moved it. */
     camera: () => ({ position: app.viewer.camera.position.toArray(), target: app.viewer.controls.target.toArray() }),
     /** The estimate the controls show (the core's answer for the resolution on the slider), or null. */

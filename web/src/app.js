@@ -103,9 +103,10 @@ export function verdictText(s, surfaceGenus = null, keeping = 0) {
 
 export class App {
   constructor({ bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl, surfaceToggleEl,
-    qualityTechEl = globalThis.document?.getElementById?.('quality-tech') ?? null }) {
+    qualityTechEl = globalThis.document?.getElementById?.('quality-tech') ?? null,
+    mirrorOptionEl = globalThis.document?.getElementById?.('mirror-plane-option') ?? null }) {
     Object.assign(this, { bridge, viewer, controls, plot, parts, status, summaryEl, surfaceEl, qualityEl,
-      surfaceToggleEl, qualityTechEl });
+      surfaceToggleEl, qualityTechEl, mirrorOptionEl });
     this.surfaceGenus = null; // of the loaded mesh
     this.modelOfSurface = false; // the model on screen was made from the loaded mesh
     this.queued = null; // a file dropped during a run, loaded when it ends
@@ -200,6 +201,7 @@ export class App {
     this.modelAfterMesh = false;
     this.controls.shapeChanged?.(); // the last shape's estimate and advice go at once
     this.parts.clear();
+    this.showMirrorPlane(null);
     this.plot.reset();
     this.summaryEl.textContent = 'The model on screen was made before this shape was loaded: press Run for this one.';
     this.showQuality(null);
@@ -292,6 +294,7 @@ export class App {
     this.controls.setRunning(true);
     this.plot.reset();
     this.parts.clear(); // the list follows the new model when the run ends
+    this.showMirrorPlane(null); // and its mirror plane, if it has one
     this.summaryEl.textContent = 'Running: the parts list follows when the run ends.';
     this.showQuality(null);
     this.status.note('Running…');
@@ -385,6 +388,16 @@ export class App {
     await this.bridge.cancel();
   }
 
+  /**
+   * The mirror plane of the model on screen (the parts report's `mirror`, core/parts/mirror_halves.h) drawn
+   * in the view, with its view option; null hides both.
+   */
+  showMirrorPlane(mirror) {
+    const plane = mirror ? { axis: 'xyz'.indexOf(mirror.axis), at: mirror.coordinate_b0 } : null;
+    this.viewer.setMirrorPlane?.(plane);
+    if (this.mirrorOptionEl) this.mirrorOptionEl.hidden = !plane;
+  }
+
   /** The parts list, the result line and the quality line of the model on screen; its summary. */
   async refreshResults() {
     try {
@@ -392,6 +405,7 @@ export class App {
       const { have } = this.controls.owned?.() ?? { have: '' };
       const report = await this.bridge.parts(have);
       this.parts.show(report);
+      this.showMirrorPlane(report.mirror);
       this.showKitResult(report, have);
       const s = await this.bridge.summary();
       this.shownSummary = s;
@@ -402,6 +416,7 @@ export class App {
     } catch (e) {
       this.shownSummary = null;
       this.parts.clear();
+      this.showMirrorPlane(null);
       this.showKitResult(null, '');
       this.summaryEl.textContent = '';
       this.showQuality(null);

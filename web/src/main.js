@@ -55,6 +55,7 @@ $('cancel').addEventListener('click', () => app.cancel());
 $('share').addEventListener('click', () => app.shareLink().catch((e) => status.error(e.message)));
 $('show-faces').addEventListener('change', (e) => viewer.setFacesVisible(e.target.checked));
 $('show-surface').addEventListener('change', (e) => viewer.setSurfaceVisible(e.target.checked));
+$('show-mirror-plane').addEventListener('change', (e) => viewer.setMirrorVisible(e.target.checked));
 $('fit').addEventListener('click', () => viewer.fit());
 // Narrow screens: the panels under the viewer, one tap away.
 for (const b of document.querySelectorAll('[data-jump]')) {

@@ -19,6 +19,8 @@ export class Viewer {
     this.surfaceBounds = null;
     this.showFaces = false;
     this.showSurface = false;
+    this.showMirror = true;
+    this.mirrorPlane = null; // {axis: 0..2, at} (Zome units) of the model shown when it is mirror-symmetric
     this.pending = new Map();
     this.nextId = 1;
     this.pickMesh = null; // the surface on this thread, for clicks (the render worker has its own copy)
@@ -117,12 +119,28 @@ export class Viewer {
 
   setFacesVisible(on) {
     this.showFaces = on;
-    this.worker.postMessage({ type: 'visibility', faces: this.showFaces, surface: this.showSurface });
+    this.sendVisibility();
   }
 
   setSurfaceVisible(on) {
     this.showSurface = on;
-    this.worker.postMessage({ type: 'visibility', faces: this.showFaces, surface: this.showSurface });
+    this.sendVisibility();
+  }
+
+  setMirrorVisible(on) {
+    this.showMirror = on;
+    this.sendVisibility();
+  }
+
+  sendVisibility() {
+    this.worker.postMessage({ type: 'visibility', faces: this.showFaces, surface: this.showSurface,
+      mirror: this.showMirror });
+  }
+
+  /** The mirror plane of a symmetric model ({axis: 0..2, at}, Zome units), drawn translucent; null removes it. */
+  setMirrorPlane(plane) {
+    this.mirrorPlane = plane;
+    this.worker.postMessage({ type: 'mirrorPlane', plane });
   }
 
   /** Highlights the struts whose kind is in `kindIds` (numbers 0..8); null restores the colours. */

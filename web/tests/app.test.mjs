@@ -319,3 +319,24 @@ test('quality: a mirrored model says it maps onto itself; a shape not symmetric 
   assert.equal(qualityText(refused), 'Not made mirror-symmetric: the shape is lopsided.');
   assert.equal(qualityText({ stats: { mirror: { mode: 'off', message: '' } } }), '');
 });
+
+test('the mirror plane: drawn for a symmetric model with its view option, gone for the next shape and during a run', async () => {
+  const planes = [];
+  const t = makeApp({ parts: async () => ({ balls: 5, mirror: { axis: 'z', coordinate_b0: 4.85, half: {}, middle: {} } }) });
+  t.viewer.setMirrorPlane = (p) => planes.push(p);
+  const option = new FakeElement('label');
+  option.hidden = true;
+  t.app.mirrorOptionEl = option;
+  await t.app.refreshResults();
+  assert.deepEqual(planes.at(-1), { axis: 2, at: 4.85 });
+  assert.equal(option.hidden, false);
+  await t.app.loadBytes('ring.obj', new ArrayBuffer(1)); // a new shape: the old model's plane goes
+  assert.equal(planes.at(-1), null);
+  assert.equal(option.hidden, true);
+  await t.app.refreshResults();
+  t.bridge.parts = async () => ({ balls: 5 }); // the next run's model is not symmetric
+  await t.app.run();
+  assert.ok(planes.includes(null));
+  assert.equal(planes.at(-1), null);
+  assert.equal(option.hidden, true);
+});

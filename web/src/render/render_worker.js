@@ -49,7 +49,8 @@ const handlers = {
   },
   model({ snapshot }) { scene.setModel(snapshot); requestRender(); },
   surface({ surface }) { scene.setSurface(surface); requestRender(); },
-  visibility({ faces, surface }) { scene.setVisibility(faces, surface); requestRender(); },
+  visibility({ faces, surface, mirror }) { scene.setVisibility(faces, surface, mirror); requestRender(); },
+  mirrorPlane({ plane }) { scene.setMirrorPlane(plane); requestRender(); },
   highlight({ kinds }) { scene.highlightKinds(kinds); requestRender(); },
   buildStep({ state }) { scene.setBuildStep(state); requestRender(); },
   // Reads the pixels in the same task as the draw (no preserveDrawingBuffer needed).

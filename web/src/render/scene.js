@@ -1,6 +1,6 @@
 // The model as three.js objects: struts as instanced prisms in Zome blue/yellow/red (real lengths;
 // blue struts have a rectangular, yellow a triangular, red a pentagonal section, as the real
-// parts), white balls, optional faces and translucent input surface. Runs in the render worker;
+// parts), white balls, optional faces, translucent input surface and mirror plane. Runs in the render worker;
 // THREE is passed in so this file has no import to resolve.
 
 // Sizes in Zome units (b0 = 46.27 mm centre to centre): ball 17.67 mm across, struts ~7 mm thick.
@@ -30,6 +30,8 @@ export function buildScene(THREE, camera) {
       side: THREE.DoubleSide, depthWrite: false }),
     surface: new THREE.MeshStandardMaterial({ color: 0xe8d9c0, transparent: true, opacity: 0.3,
       depthWrite: false, side: THREE.DoubleSide }),
+    mirror: new THREE.MeshBasicMaterial({ color: 0xa8c8ff, transparent: true, opacity: 0.16, depthWrite: false,
+      side: THREE.DoubleSide }),
   };
   for (const colour of ['blue', 'yellow', 'red']) {
     shared[colour] = {
@@ -48,6 +50,9 @@ export function buildScene(THREE, camera) {
   let surfaceMesh = null;
   let showFaces = false;
   let showSurface = false;
+  let mirrorPlane = null; // {axis, at} (Zome units) of a symmetric model, drawn as a translucent sheet
+  let mirrorMesh = null;
+  let showMirror = true;
 
   function pooledMesh(key, geometry, material, count) {
     let mesh = pool[key];
@@ -156,8 +161,49 @@ export function buildScene(THREE, camera) {
       modelGroup.add(facesMesh);
     }
     ballPositions = positions;
+    fitMirrorPlane();
     buildStep = null; // a new model has other steps; the Build view sends them again
     if (highlighted) highlightKinds(highlighted);
+  }
+
+  /**
+   * The mirror plane of a symmetric model: a translucent sheet across `axis` at `at` (Zome units, the
+   * model's own coordinates), one ball beyond the model's extent on the two other axes. null removes it.
+   */
+  function setMirrorPlane(plane) {
+    mirrorPlane = plane;
+    fitMirrorPlane();
+  }
+
+  function fitMirrorPlane() {
+    if (mirrorMesh) {
+      modelGroup.remove(mirrorMesh);
+      mirrorMesh.geometry.dispose();
+      mirrorMesh = null;
+    }
+    if (!mirrorPlane || ballPositions.length < 3) return;
+    const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+    for (let i = 0; i < ballPositions.length; i++) {
+      lo[i % 3] = Math.min(lo[i % 3], ballPositions[i]);
+      hi[i % 3] = Math.max(hi[i % 3], ballPositions[i]);
+    }
+    const margin = 4 * BALL_RADIUS;
+    const [u, v] = [0, 1, 2].filter((k) => k !== mirrorPlane.axis);
+    const corners = [[lo[u] - margin, lo[v] - margin], [hi[u] + margin, lo[v] - margin],
+      [hi[u] + margin, hi[v] + margin], [lo[u] - margin, hi[v] + margin]];
+    const positions = new Float32Array(12);
+    corners.forEach(([a, b], k) => {
+      positions[3 * k + mirrorPlane.axis] = mirrorPlane.at;
+      positions[3 * k + u] = a;
+      positions[3 * k + v] = b;
+    });
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(positions, 3));
+    geometry.setIndex([0, 1, 2, 0, 2, 3]);
+    mirrorMesh = new THREE.Mesh(geometry, shared.mirror);
+    mirrorMesh.renderOrder = 1; // after the opaque parts, so they show through it
+    mirrorMesh.visible = showMirror;
+    modelGroup.add(mirrorMesh);
   }
 
   function setSurface(surface) {
@@ -176,11 +222,13 @@ export function buildScene(THREE, camera) {
     root.add(surfaceMesh);
   }
 
-  function setVisibility(faces, surface) {
+  function setVisibility(faces, surface, mirror = showMirror) {
     showFaces = faces;
     showSurface = surface;
+    showMirror = mirror;
     if (facesMesh) facesMesh.visible = faces;
     if (surfaceMesh) surfaceMesh.visible = surface;
+    if (mirrorMesh) mirrorMesh.visible = mirror;
   }
 
   /** Fractions of the pixels (RGBA bytes) close to each strut colour and to the background. */
@@ -199,5 +247,5 @@ export function buildScene(THREE, camera) {
       highlight: count.highlight / total, background: count.background / total };
   }
 
-  return { root, setModel, setSurface, setVisibility, highlightKinds, setBuildStep, colourCoverage };
+  return { root, setModel, setSurface, setMirrorPlane, setVisibility, highlightKinds, setBuildStep, colourCoverage };
 }
