@@ -59,6 +59,15 @@ test('mirror: the scorpion is built symmetric, as the CLI builds it; the bunny i
   expect(plan.steps.map((st) => st.balls.length)).toEqual(nativePlan.steps.map((st) => st.balls.length));
   await expect(page.locator('#build-figures')).toContainText('Both halves are built alike');
 
+  // Working on the symmetric model keeps it symmetric: Fewer balls, then Improve.
+  for (const kind of ['fewer', 'improve']) {
+    await page.evaluate((k) => window.zomeify.workOn(k), kind);
+    const w = await summary(page);
+    expect(w.valid, `${kind}: ${w.validation}`).toBe(true);
+    expect(w.stats.mirror.model, kind).toEqual({ balls_without_image: 0, struts_without_image: 0, symmetric: true });
+    expect(w.stats.mirror.message, kind).toMatch(/^Continued mirror-symmetric about x = /);
+  }
+
   await pickFile(page, 'bunny.obj', fs.readFileSync(path.join(MESHES, 'bunny.obj')));
   await expect(page.locator('#mirror-note')).toContainText('Not made mirror-symmetric', { timeout: 60_000 });
   await expect(page.locator('#mirror')).not.toBeChecked();

@@ -390,7 +390,9 @@ void Session::execute_run(const RunOptions& options, RunControl& control)
             // Improve, Fewer balls, More detail, Fix here: from the model on screen (it must have
             // been made for this shape: run_pipeline refuses it otherwise), at its own size.
             po.from = model();
-            po.mirror = MirrorMode::Off; // a model is continued as it is (the switch is for new runs)
+            // A symmetric model stays symmetric; any other is continued as it is, without a word on it.
+            const std::optional<ModelMirror> own = model_mirror(*po.from);
+            po.mirror = own && own->mismatch.symmetric() ? MirrorMode::Auto : MirrorMode::Off;
             if (options.radius > 0.0)
                 po.fix = FixSpot{Vec3(options.near[0], options.near[1], options.near[2]), options.radius};
         }

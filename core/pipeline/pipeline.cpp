@@ -127,6 +127,35 @@ ZomeMesh build_z0(PipelineResult& r, const TriangleMesh& surface, const SurfaceP
     return z0_mesh;
 }
 
+// `--from MODEL --mirror auto`: a model that maps exactly onto itself about a plane across an axis
+// (model_mirror) is continued symmetric, every change with its mirror image (a spot to fix with its
+// image); any other model is continued as it is, and r.mirror says which.
+void continue_mirrored(PipelineResult& r, const ZomeModel& from, AnnealOptions& anneal)
+{
+    MirrorChoice c;
+    c.mode = MirrorMode::Auto;
+    c.b0 = from.transform.scale;
+    const std::optional<ModelMirror> own = model_mirror(from);
+    char text[200];
+    if (own && own->mismatch.symmetric())
+    {
+        c.symmetric = true;
+        c.used = own->mirror;
+        c.along = mesh_plane(own->mirror, from.transform);
+        anneal.mirror = own->mirror;
+        if (anneal.region)
+            anneal.region->mirror = own->mirror;
+        std::snprintf(text, sizeof text, "Continued mirror-symmetric about %c = %.4g (the model's own plane).",
+                      "xyz"[own->mirror.axis], c.along->at);
+    }
+    else
+        std::snprintf(text, sizeof text,
+                      "Continued as it is: the model is not mirror-symmetric (%zu of %zu balls have no mirror image).",
+                      own ? own->mismatch.balls : size_t{0}, from.nodes.size());
+    c.message = text;
+    r.mirror = c;
+}
+
 // The model to continue (PipelineOptions::from), checked against the surface, as the start.
 ZomeMesh continue_from(PipelineResult& r, const TriangleMesh& surface, const SurfaceProjector& projector,
                        const PipelineOptions& options, AnnealOptions& anneal)
@@ -161,6 +190,8 @@ ZomeMesh continue_from(PipelineResult& r, const TriangleMesh& surface, const Sur
         if (anneal.target_nodes == 0)
             anneal.target_nodes = fix_target(from, *r.region);
     }
+    if (options.mirror == MirrorMode::Auto)
+        continue_mirrored(r, from, anneal);
     // More balls than the surface holds well at this size make the model worse (More detail, issue 40).
     r.capacity = surface_capacity(surface, from.transform);
     if (!options.fix)
@@ -261,8 +292,6 @@ PipelineResult run_pipeline(const TriangleMesh& surface, long long surface_genus
         (options.resolution < kMinResolution || options.resolution > kMaxResolution))
         throw InvalidInputError("the resolution must be between " + std::to_string(kMinResolution) + " and " +
                                 std::to_string(kMaxResolution) + " cells, or automatic");
-    if (options.mirror != MirrorMode::Off && options.from)
-        throw InvalidInputError("--mirror works on a new run, not with --from (a model is continued as it is)");
     if (options.fix && !options.from)
         throw InvalidInputError("fixing one spot needs a model to work on (--from MODEL)");
 

@@ -56,7 +56,8 @@ struct PipelineOptions
     //! model already has about the capacity (at_capacity, capacity_full_text).
     std::optional<FixSpot> fix;
     //! Auto: a mirror-symmetric model when the shape is symmetric about a plane along a mesh axis
-    //! (mirror_choice.h). Not with `from`.
+    //! (mirror_choice.h). With `from`: a model that maps onto itself stays symmetric (every change with
+    //! its image, a spot to fix with its image); any other is continued as it is.
     MirrorMode mirror = MirrorMode::Off;
     AnnealOptions anneal;
 };

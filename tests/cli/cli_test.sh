@@ -190,7 +190,9 @@ expect_output "parts by half"   '^mirror-symmetric \(about a plane across the [x
 expect_output "steps by halves"  '^Both halves are built alike: each step adds its parts with their mirror images about the plane across the [xz] axis\.$' steps "$tmp/m.zome.json"
 expect_output "run mirror bunny" 'Not made mirror-symmetric' run "$mesh" --mirror auto --initial-only -o "$tmp/x.zome.json"
 expect_error "mirror value"     "--mirror wants auto or off, got 'on'" run "$mesh" --mirror on -o "$tmp/x.zome.json"
-expect_error "mirror from"      '--mirror works on a new run, not with --from' run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --mirror auto -o "$tmp/x.zome.json"
+expect_output "mirror from"     'Continued mirror-symmetric about [xyz] = .*Every change was made with its mirror image: the model maps onto itself\.' \
+  run "$shared/data/meshes/torus.obj" --from "$tmp/m.zome.json" --mirror auto --target-nodes 150 --proposals 20000 --threads 1 -o "$tmp/x.zome.json"
+expect_output "mirror from off" 'Continued as it is: the model is not mirror-symmetric' run "$shared/data/meshes/torus.obj" --from "$tmp/w.zome.json" --mirror auto --proposals 2000 --threads 1 -o "$tmp/x.zome.json"
 expect_error "within and have" 'give --have KITS or --within-estimate' run "$shared/data/meshes/bunny.obj" --have basic --within-estimate -o "$tmp/x.zome.json"
 # --fit-kits with one Creator 3: a plan, then the result's own parts fit the kit or the output says
 # it does not and names the nearest smaller size expected to.

@@ -1,12 +1,14 @@
 // `run --mirror auto` (run_pipeline with MirrorMode::Auto, mirror_choice.h, issue 41): a symmetric
 // shape gives a model that maps onto itself exactly (every ball and strut has its mirror image),
 // closed, of the shape's genus, with no clash and no fold-over, on one thread and on two; a
-// lopsided shape is reported as such and built as without the mirror; --from refuses it.
+// lopsided shape is reported as such and built as without the mirror; a symmetric model continued
+// (--from) stays symmetric, any other is continued as it is.
 #include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
+#include "core/anneal/engine/change_region.h"
 #include "core/base/errors.h"
 #include "core/parts/mirror_halves.h"
 #include "core/parts/parts_list.h"
@@ -35,7 +37,8 @@ PipelineOptions mirrored(int threads, uint64_t proposals)
     return o;
 }
 
-void expect_symmetric_model(const PipelineResult& r, long long genus)
+//! `min_commits`: a run from Z0 commits about one proposal in 50; a continued run, cooler, far fewer.
+void expect_symmetric_model(const PipelineResult& r, long long genus, uint64_t min_commits = kProposals / 100)
 {
     ASSERT_TRUE(r.mirror.has_value());
     EXPECT_TRUE(r.mirror->symmetric) << r.mirror->message;
@@ -48,7 +51,7 @@ void expect_symmetric_model(const PipelineResult& r, long long genus)
     EXPECT_EQ(r.model_genus, genus);
     EXPECT_EQ(r.clearance.total(), 0U);
     EXPECT_EQ(r.fold_overs.count(), 0U);
-    EXPECT_GT(r.anneal->stats.commits, kProposals / 100); // it changed the model (about one proposal in 50 commits)
+    EXPECT_GT(r.anneal->stats.commits, min_commits); // it changed the model
     // Its parts by half: two halves and the middle make the whole, kind by kind.
     const std::optional<MirrorHalves> halves = mirror_halves(r.model);
     ASSERT_TRUE(halves.has_value());
@@ -96,15 +99,67 @@ TEST(MirrorRun, ALopsidedShapeIsReportedAndBuiltAsWithoutTheMirror)
     EXPECT_FALSE(mirror_halves(with.model).has_value()); // no halves for a model that is not symmetric
 }
 
-TEST(MirrorRun, AContinuedRunRefusesIt)
+// A symmetric model worked on with --mirror auto (Improve, Fewer balls, More detail, Fix here) stays
+// exactly symmetric; a fix changes nothing outside its spot and the spot's image.
+TEST(MirrorRun, AContinuedSymmetricModelStaysSymmetric)
 {
     const TriangleMesh torus = test::make_torus(3.0, 1.2, 48, 24);
-    PipelineOptions o = mirrored(1, 1000);
-    o.initial_only = true;
-    o.mirror = MirrorMode::Off;
-    PipelineOptions again = mirrored(1, 1000);
-    again.from = run_pipeline(torus, 1, o).model;
-    EXPECT_THROW(run_pipeline(torus, 1, again), InvalidInputError);
+    const ZomeModel start = run_pipeline(torus, 1, mirrored(1, kProposals / 3)).model;
+    ASSERT_TRUE(model_mirror(start)->mismatch.symmetric());
+    for (const double factor : {0.8, 1.25})
+    {
+        PipelineOptions again = mirrored(1, kProposals / 3);
+        again.from = start;
+        again.anneal.target_nodes = static_cast<size_t>(factor * static_cast<double>(start.nodes.size()));
+        const PipelineResult r = run_pipeline(torus, 1, again);
+        ASSERT_TRUE(r.mirror.has_value());
+        EXPECT_TRUE(r.mirror->used.has_value()) << r.mirror->message;
+        EXPECT_NE(r.mirror->message.find("Continued mirror-symmetric"), std::string::npos) << r.mirror->message;
+        expect_symmetric_model(r, 1, 10);
+        EXPECT_FALSE(r.kept_start) << "factor " << factor; // the count moved: a new model
+    }
+    // Fix a spot on one side of the plane: its image is fixed alike, the rest stays.
+    PipelineOptions fix = mirrored(1, kProposals / 3);
+    fix.from = start;
+    const LatticeMirror plane = model_mirror(start)->mirror;
+    ZVec aside = start.nodes[0];
+    for (const ZVec& p : start.nodes)
+        if (std::abs(p.coord(plane.axis) - plane.coordinate()) > std::abs(aside.coord(plane.axis) - plane.coordinate()))
+            aside = p;
+    const ModelTransform& t = start.transform;
+    const Vec3 spot(aside.coord(0) * t.scale + t.translation[0], aside.coord(1) * t.scale + t.translation[1],
+                    aside.coord(2) * t.scale + t.translation[2]);
+    fix.fix = FixSpot{spot, 1.0};
+    const PipelineResult fixed = run_pipeline(torus, 1, fix);
+    ASSERT_TRUE(fixed.mirror && fixed.mirror->used) << (fixed.mirror ? fixed.mirror->message : "no mirror");
+    expect_symmetric_model(fixed, 1, 1);
+    ChangeRegion region = *fixed.region;
+    region.mirror = plane;
+    for (const ZVec& p : start.nodes) // every ball outside the spot and its image is where it was
+    {
+        if (!in_region(region, p))
+        {
+            EXPECT_NE(std::find(fixed.model.nodes.begin(), fixed.model.nodes.end(), p), fixed.model.nodes.end());
+        }
+    }
+}
+
+TEST(MirrorRun, AContinuedModelThatIsNotSymmetricIsContinuedAsItIs)
+{
+    const TriangleMesh torus = test::make_torus(3.0, 1.2, 48, 24);
+    PipelineOptions off = mirrored(1, kProposals / 3);
+    off.mirror = MirrorMode::Off;
+    const ZomeModel start = run_pipeline(torus, 1, off).model;
+    ASSERT_FALSE(model_mirror(start)->mismatch.symmetric());
+    PipelineOptions with = mirrored(1, 20000);
+    with.from = start;
+    PipelineOptions without = with;
+    without.mirror = MirrorMode::Off;
+    const PipelineResult a = run_pipeline(torus, 1, with), b = run_pipeline(torus, 1, without);
+    ASSERT_TRUE(a.mirror.has_value());
+    EXPECT_FALSE(a.mirror->used.has_value());
+    EXPECT_NE(a.mirror->message.find("Continued as it is"), std::string::npos) << a.mirror->message;
+    EXPECT_EQ(a.model, b.model);
 }
 
 } // namespace

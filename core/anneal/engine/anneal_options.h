@@ -27,6 +27,9 @@ struct ChangeRegion
 {
     std::array<double, 3> centre{};
     double radius = 0.0;
+    //! Set for a mirror-symmetric run: the region's mirror image belongs to it too, so the image of a
+    //! change in the region is allowed where it lands.
+    std::optional<LatticeMirror> mirror;
 };
 
 struct AnnealOptions

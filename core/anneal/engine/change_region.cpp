@@ -1,10 +1,14 @@
 #include "core/anneal/engine/change_region.h"
 
+#include <exception>
+
 #include "core/mesh/circulators.h"
 
 namespace zomeify {
 
-bool in_region(const ChangeRegion& region, const ZVec& p) noexcept
+namespace {
+
+bool in_sphere(const ChangeRegion& region, const ZVec& p) noexcept
 {
     double d2 = 0.0;
     for (int k = 0; k < 3; ++k)
@@ -13,6 +17,24 @@ bool in_region(const ChangeRegion& region, const ZVec& p) noexcept
         d2 += d * d;
     }
     return d2 <= region.radius * region.radius;
+}
+
+} // namespace
+
+bool in_region(const ChangeRegion& region, const ZVec& p) noexcept
+{
+    if (in_sphere(region, p))
+        return true;
+    if (!region.mirror)
+        return false;
+    try
+    {
+        return in_sphere(region, region.mirror->reflect(p));
+    }
+    catch (const std::exception&) // an image beyond int32 lies nowhere near the region
+    {
+        return false;
+    }
 }
 
 bool region_allows(const ZomeMesh& mesh, const LocalChange& change, const ChangeRegion& region) noexcept

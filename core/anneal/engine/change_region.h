@@ -11,7 +11,8 @@
 
 namespace zomeify {
 
-//! Whether the exact position p lies inside the region (model units).
+//! Whether the exact position p lies inside the region (model units), or inside its mirror image
+//! when the region has a mirror.
 bool in_region(const ChangeRegion& region, const ZVec& p) noexcept;
 //! Whether `change` keeps to the region (its removed elements are live in `mesh`).
 bool region_allows(const ZomeMesh& mesh, const LocalChange& change, const ChangeRegion& region) noexcept;
