@@ -97,7 +97,7 @@ MirrorChoice choose_mirror(const SurfaceProjector& surface, double b0)
         least = share;
     }
     const double rms_b0 = c.measured.rms / b0;
-    char text[400];
+    char text[400]; // planes print as `at + 0.0`: exactly -0 reads "0", never "-0"
     if (!c.along)
         std::snprintf(text, sizeof text,
                       "Not made mirror-symmetric: the shape's best mirror plane (normal %.2f, %.2f, %.2f) is not "
@@ -107,14 +107,14 @@ MirrorChoice choose_mirror(const SurfaceProjector& surface, double b0)
         std::snprintf(text, sizeof text,
                       "Not made mirror-symmetric: the shape's mirror image about %s = %.4g lies %.1f mm from it "
                       "(RMS; more than %.1f mm).",
-                      axis_name(c.along->axis), c.along->at, rms_b0 * kMmPerB0, kMirrorToleranceB0 * kMmPerB0);
+                      axis_name(c.along->axis), c.along->at + 0.0, rms_b0 * kMmPerB0, kMirrorToleranceB0 * kMmPerB0);
     else
     {
         c.symmetric = true;
         std::snprintf(text, sizeof text,
                       "Mirror-symmetric about %s = %.4g: the shape's mirror image lies within %.1f mm of it (RMS "
                       "%.1f mm).",
-                      axis_name(c.along->axis), c.along->at, c.measured.max / b0 * kMmPerB0, rms_b0 * kMmPerB0);
+                      axis_name(c.along->axis), c.along->at + 0.0, c.measured.max / b0 * kMmPerB0, rms_b0 * kMmPerB0);
     }
     c.message = text;
     return c;

@@ -80,7 +80,7 @@ void build_mirrored_z0(PipelineResult& r, const TriangleMesh& surface, const Sur
     std::snprintf(text, sizeof text,
                   "Not made mirror-symmetric: the shape is symmetric about %s = %.4g (RMS %.1f mm), but no "
                   "symmetric start with as many holes as the shape (%lld) was found at this size.",
-                  axis.c_str(), r.mirror->along->at, r.mirror->measured.rms / r.mirror->b0 * kMmPerB0,
+                  axis.c_str(), r.mirror->along->at + 0.0, r.mirror->measured.rms / r.mirror->b0 * kMmPerB0,
                   static_cast<long long>(r.surface_genus));
     r.mirror->message = text;
 }
@@ -146,7 +146,7 @@ void continue_mirrored(PipelineResult& r, const ZomeModel& from, AnnealOptions& 
         if (anneal.region)
             anneal.region->mirror = own->mirror;
         std::snprintf(text, sizeof text, "Continued mirror-symmetric about %c = %.4g (the model's own plane).",
-                      "xyz"[own->mirror.axis], c.along->at);
+                      "xyz"[own->mirror.axis], c.along->at + 0.0); // + 0.0: "0", never "-0"
     }
     else
         std::snprintf(text, sizeof text,

@@ -64,7 +64,7 @@ std::string mirror_summary(const ModelScore& score)
     s << std::setprecision(4);
     const char axis = "xyz"[m.mirror.axis];
     if (m.mismatch.symmetric())
-        s << "maps onto itself about " << axis << " = " << score.mirror_at
+        s << "maps onto itself about " << axis << " = " << score.mirror_at + 0.0 // + 0.0: "0", never "-0"
           << " (every ball and strut has its mirror image)";
     else
         s << "not mirror-symmetric: about the best plane across an axis (" << axis << " = " << score.mirror_at << "), "
