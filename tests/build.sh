@@ -5,7 +5,8 @@
 #                            are built by `npm run bench` when it needs them (each wasm link costs ~30 s)
 #   asan    build/asan       clang -O2 -g, AddressSanitizer + UndefinedBehaviorSanitizer + libFuzzer coverage:
 #                            the whole test suite and the libFuzzer targets of tests/fuzz from one compile
-#   tsan    build/tsan-lane  clang -O2 -g with ThreadSanitizer; only the test binary (the lane runs `ctest -L parallel`)
+#   tsan    build/tsan-lane  clang -O2 -g with ThreadSanitizer; only the test binary, from the files with *Parallel
+#                            suites (the lane runs `ctest -L parallel`)
 #   fuzz    the same as asan (kept as a name for tests/fuzz/run.sh)
 # The sanitizer builds use clang: with UBSan it compiles this code base about 3x faster than g++ 12. They
 # keep line tables only (-gline-tables-only: what sanitizer stack traces print) and precompile the heavy
@@ -30,7 +31,7 @@ for flavour in "$@"; do
               -DZOME_SANITIZE="address;undefined" -DZOME_BUILD_BENCH=OFF -DZOME_STRICT=ON >/dev/null ;;
     tsan)   dir=build/tsan-lane; targets=(zome_tests)
             CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${san_flags[@]}" -DZOME_SANITIZE=thread \
-              -DZOME_BUILD_BENCH=OFF >/dev/null ;;
+              -DZOME_BUILD_BENCH=OFF -DZOME_PARALLEL_TESTS_ONLY=ON >/dev/null ;;
     *) echo "build.sh: unknown flavour '$flavour'" >&2; exit 2 ;;
   esac
   echo "build: $flavour"
