@@ -38,7 +38,10 @@ public:
     }
     std::string load_model(const std::string& bytes, const std::string& name) { return s_.load_model(bytes, name); }
     std::string open_link(const std::string& link) { return s_.open_link(link); }
-    std::string estimate(int resolution, double target) { return s_.estimate(resolution, target); }
+    std::string estimate(int resolution, double target, bool with_kits)
+    {
+        return s_.estimate(resolution, target, with_kits);
+    }
     std::string estimate_size(double size_cm, double target) { return s_.estimate_size(size_cm, target); }
     std::string kit_check(const std::string& have, double balls) const { return s_.kit_check(have, balls); }
     std::string fit_kits(const std::string& have, int max_resolution, bool shrink)

@@ -202,7 +202,8 @@ namespace {
 // the surface's, and the finished model's size and the kits for a run towards `target` balls (0:
 // Z0's count), which are kept for the run that follows (Session::named_kits_).
 std::tuple<InitialModel, nlohmann::json, KitEstimate> z0_estimate(const LoadedSurface& s, int resolution,
-                                                                  double b1 = 0.0, size_t target = 0)
+                                                                  double b1 = 0.0, size_t target = 0,
+                                                                  bool with_kits = true)
 {
     // Z0 as a run builds it (z0_choice.h), so the estimate's ball count is the run's starting model.
     InitialModel z0 =
@@ -218,6 +219,11 @@ std::tuple<InitialModel, nlohmann::json, KitEstimate> z0_estimate(const LoadedSu
     out["kept"] = z0.report.valid && z0.report.topology.genus == s.report.genus;
     out["seconds"] = z0.report.seconds;
     out["z0_seconds"] = z0.report.seconds; // kept when `seconds` is the automatic search's time
+    if (!with_kits)
+    {
+        out["size_mm"] = z0_built_size_cm(z0.model) * 10.0;
+        return {std::move(z0), std::move(out), KitEstimate{}};
+    }
     KitEstimate kits = estimate_kits(*s.projector, z0, target);
     out.update(size_estimate(z0, kits));
     return {std::move(z0), std::move(out), std::move(kits)};
@@ -242,7 +248,7 @@ const LoadedSurface& Session::idle_surface() const
     return *surface_;
 }
 
-std::string Session::estimate(int resolution, double target)
+std::string Session::estimate(int resolution, double target, bool with_kits)
 {
     return guarded([&] {
         const LoadedSurface& s = idle_surface();
@@ -250,8 +256,9 @@ std::string Session::estimate(int resolution, double target)
             throw InvalidInputError("resolution must be between " + std::to_string(kMinResolution) + " and " +
                                     std::to_string(kMaxResolution) + " cells");
         const size_t balls = target_of(target);
-        auto [z0, out, kits] = z0_estimate(s, resolution, 0.0, balls);
-        named_kits_ = NamedKits{resolution, 0.0, balls, std::move(kits)};
+        auto [z0, out, kits] = z0_estimate(s, resolution, 0.0, balls, with_kits);
+        if (with_kits)
+            named_kits_ = NamedKits{resolution, 0.0, balls, std::move(kits)};
         const GenusAdvice advice =
             z0.report.valid ? genus_advice(s.mesh, s.report.genus, s.is_inside(), resolution, z0.report.topology.genus,
                                            run_z0_options(*s.projector, s.report.genus, resolution, 0.0))

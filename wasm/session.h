@@ -42,8 +42,10 @@ public:
     std::string open_link(const std::string& link);
 
     //! Z0 at `resolution` cells without keeping it: {nodes, struts, genus, surface_genus, kept,
-    //! advice, size_mm, kits}. Used by the page's live estimate.
-    std::string estimate(int resolution, double target = 0);
+    //! advice, size_mm, kits}. Used by the page's live estimate. Without `with_kits` the kit fields
+    //! are left out and the quick pass that names them (a second or two in the browser) is skipped:
+    //! the page asks so when its line names no kits (the model on screen was made at `resolution`).
+    std::string estimate(int resolution, double target = 0, bool with_kits = true);
     //! Z0 for a built longest side of `size_cm` (core/assembly/real_size.h, as `run --size-cm`):
     //! estimate()'s fields plus {size_cm, b1}; a clear error for a size out of range.
     std::string estimate_size(double size_cm, double target = 0);

@@ -238,17 +238,21 @@ export class App {
   async showSample(id = DEFAULT_SAMPLE, fetched = App.fetchSample(id), { fit = true } = {}) {
     const { sample } = fetched;
     const [mesh, model] = await Promise.all([fetched.mesh, fetched.model]);
-    if (model) await this.loadBytes(sample.id + '.zome.json', model, { fit });
-    await this.loadBytes(sample.mesh, mesh, { fit: !model, chooseResolution: false, fresh: !model });
-    this.modelOfSurface = Boolean(model);
-    this.onChange?.(); // the sample's model can be worked on at once
-    // The sample's model was made from this mesh: its line now compares their holes.
-    if (model && this.shownSummary) this.summaryEl.textContent = resultText(this.shownSummary, this.surfaceGenus);
-    this.controls.set({ resolution: sample.resolution });
-    if (model) {
-      this.modelResolution = sample.resolution;
-      this.controls.setResult?.(sample.resolution); // its kit plan is the one under Parts
-    }
+    const putUp = async () => {
+      if (model) await this.loadBytes(sample.id + '.zome.json', model, { fit });
+      await this.loadBytes(sample.mesh, mesh, { fit: !model, chooseResolution: false, fresh: !model });
+      this.modelOfSurface = Boolean(model);
+      this.onChange?.(); // the sample's model can be worked on at once
+      // The sample's model was made from this mesh: its line now compares their holes.
+      if (model && this.shownSummary) this.summaryEl.textContent = resultText(this.shownSummary, this.surfaceGenus);
+      this.controls.set({ resolution: sample.resolution });
+      if (model) {
+        this.modelResolution = sample.resolution;
+        this.controls.setResult?.(sample.resolution); // its kit plan is the one under Parts
+      }
+    };
+    // One estimate, for the sample as shown: beside its finished model it names no kits (no quick pass).
+    await (this.controls.holdEstimates ? this.controls.holdEstimates(putUp) : putUp());
     this.status.note(`Sample: ${sample.label} (${sample.credit}). Drop your own mesh anywhere, or press Run.`);
     if (!model) await this.run();
   }
@@ -354,7 +358,8 @@ export class App {
     let e = this.controls.lastEstimate;
     if (!(e && e.resolution === opts.resolution && !opts.size_cm)) {
       try {
-        e = { ...(await this.bridge.estimate(opts.resolution)), resolution: opts.resolution };
+        // Without kits: the controls ask for them again if their line is to name them.
+        e = { ...(await this.bridge.estimate(opts.resolution, 0, { kits: false })), resolution: opts.resolution };
         this.controls.showEstimate?.(e, opts.resolution); // the controls show this same answer
       } catch {
         return -1;

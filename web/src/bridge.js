@@ -138,7 +138,10 @@ export class CoreBridge {
     return result;
   }
 
-  estimate(resolution, target = 0) { return this.request(Request.ESTIMATE, { resolution, target }); }
+  /** Z0 at `resolution` cells; `kits: false` skips naming the kits (the core's quick pass, 1–3 s here). */
+  estimate(resolution, target = 0, { kits = true } = {}) {
+    return this.request(Request.ESTIMATE, { resolution, target, kits });
+  }
   /** Z0 for a built longest side of `sizeCm` (the core's real_size formula, as `run --size-cm`). */
   estimateSize(sizeCm, target = 0) { return this.request(Request.ESTIMATE_SIZE, { sizeCm, target }); }
   /** Whether a typical model of `balls` balls fits the kits `have` ("creator3, 2x basic"). */

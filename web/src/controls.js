@@ -233,6 +233,11 @@ export class Controls {
    * controls show that resolution, its kit plan under Parts is the one kit sentence, so the
    * estimate line names no kits of its own.
    */
+  /** True while the controls show the resolution the model on screen was made at. */
+  showsResult(resolution) {
+    return this.resultResolution > 0 && this.resultResolution === resolution;
+  }
+
   setResult(resolution) {
     this.resultResolution = resolution > 0 ? resolution : 0;
     if (this.lastEstimate) this.showEstimate(this.lastEstimate, this.lastEstimate.resolution);
@@ -439,7 +444,29 @@ export class Controls {
 
   scheduleEstimate() {
     clearTimeout(this.estimateTimer);
+    if (this.held > 0) {
+      this.heldEstimate = true;
+      return;
+    }
     this.estimateTimer = setTimeout(() => this.updateEstimate(), 200);
+  }
+
+  /**
+   * Runs `work` (the app putting up a shape and its model in several steps) with the estimate held
+   * until it settles, then asks for one: an estimate from a step in between would be for settings
+   * about to change, and would keep the core busy meanwhile.
+   */
+  async holdEstimates(work) {
+    this.held = (this.held || 0) + 1;
+    try {
+      return await work();
+    } finally {
+      if (--this.held === 0 && this.heldEstimate) {
+        this.heldEstimate = false;
+        clearTimeout(this.estimateTimer);
+        this.updateEstimate(); // at once: before the requests that follow the shape (the warm-up)
+      }
+    }
   }
 
   /** Z0 at the chosen resolution: the model's bill, and the advisor's suggestion. */
@@ -461,7 +488,8 @@ export class Controls {
         this.showEstimate(e, e.resolution);
         return;
       }
-      e = await this.estimateFn(resolution, target);
+      // The line names no kits beside the model made at this resolution: the kits' quick pass waits.
+      e = await this.estimateFn(resolution, target, { kits: !this.showsResult(resolution) });
     } catch (err) {
       // No mesh loaded: clear the line and the last mesh's warning with it. Busy with a run: the
       // line still describes the model being made.
@@ -506,7 +534,9 @@ export class Controls {
     // The automatic choice's sentence is said once: with the bill, or as the warning when no grid
     // keeps the holes (then there is no other advice and no "run anyway" to tick).
     const lost = !e.kept && this.autoMessage && this.noKeepingGrid;
-    const shown = this.resultResolution > 0 && this.resultResolution === resolution;
+    const shown = this.showsResult(resolution);
+    // An estimate made without its kits (for the model on screen) is asked again when it must name them.
+    if (!shown && !('kit_plan' in e) && !this.sizeMode()) this.scheduleEstimate();
     const bill = shown ? `The model on screen was made at ${resolution} cells; its parts and kit plan are under Parts.`
       : estimateText(e, target) + (isLarge(e) ? ' — a very large build.' : '');
     out.textContent = [lost ? '' : this.autoMessage, asked, bill].filter(Boolean).join(' ');

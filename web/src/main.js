@@ -20,7 +20,7 @@ const $ = (id) => document.getElementById(id);
 const status = new Status($('status'));
 const bridge = new CoreBridge();
 const viewer = new Viewer($('viewer'));
-const controls = new Controls(document, { estimate: (r, target) => bridge.estimate(r, target),
+const controls = new Controls(document, { estimate: (r, target, opts) => bridge.estimate(r, target, opts),
   estimateSize: (cm, target) => bridge.estimateSize(cm, target), kitCheck: (have, balls) => bridge.kitCheck(have, balls),
   fitKits: (have, maxResolution, shrink) => bridge.fitKits(have, maxResolution, shrink) });
 const plot = new RunPlot(document);

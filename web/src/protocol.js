@@ -8,8 +8,9 @@ export const Request = Object.freeze({
   INIT: 'init',           // {wasmBase, threaded}            → {threaded, maxThreads, defaults, schema}
   LOAD: 'load',           // {name, bytes: ArrayBuffer, thicken?} → {kind: 'mesh'|'model', report?}
   OPEN_LINK: 'openLink',  // {link}                          → {kind: 'model'}
-  ESTIMATE: 'estimate',   // {resolution, target}            → {nodes, struts, genus, surface_genus, kept, advice,
+  ESTIMATE: 'estimate',   // {resolution, target, kits}      → {nodes, struts, genus, surface_genus, kept, advice,
                           //                                    advice_resolution, size_mm, kits, kit_plan, kit_plan_low}
+                          //                                    (kits: false leaves out the kit fields and their quick pass)
   ESTIMATE_SIZE: 'estimateSize', // {sizeCm, target}        → estimate's fields + {size_cm, b1} (as run --size-cm)
   KIT_CHECK: 'kitCheck',  // {have, balls}                   → {fits, text, owned, missing{B0..R2, balls}, budget}
   FIT_KITS: 'fitKits',    // {have, maxResolution, shrink}   → {possible, resolution, target_nodes, size_cm, message, ...}

@@ -42,7 +42,7 @@ test('a request is {id, type, ...fields}, with ids counting up and buffers in th
   bridge.run({ seconds: 5 });
   assert.deepEqual(sent.map((s) => s.msg), [
     { id: 1, type: 'load', name: 'a.obj', bytes, thicken: false },
-    { id: 2, type: 'estimate', resolution: 12, target: 300 },
+    { id: 2, type: 'estimate', resolution: 12, target: 300, kits: true },
     { id: 3, type: 'run', options: { seconds: 5 } },
   ]);
   assert.deepEqual(sent[0].transfer, [bytes]);

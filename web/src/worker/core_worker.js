@@ -158,7 +158,8 @@ const handlers = {
     postSnapshot();
     return result;
   },
-  [Request.ESTIMATE]: ({ resolution, target = 0 }) => parse(session.estimate(resolution, Number(target))),
+  [Request.ESTIMATE]: ({ resolution, target = 0, kits = true }) =>
+    parse(session.estimate(resolution, Number(target), kits !== false)),
   [Request.ESTIMATE_SIZE]: ({ sizeCm, target = 0 }) => parse(session.estimateSize(Number(sizeCm), Number(target))),
   [Request.KIT_CHECK]: ({ have, balls }) => parse(session.kitCheck(String(have ?? ''), Number(balls) || 0)),
   [Request.FIT_KITS]: ({ have, maxResolution, shrink }) =>
