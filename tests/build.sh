@@ -15,23 +15,26 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 export NODE_PATH=/usr/share/nodejs   # emscripten 3.1.6 needs Debian's acorn (toolchain.md)
 jobs=$(nproc)
+# Every flavour compiles in batches (cmake/unity_build.cmake); ZOME_UNITY=OFF builds one file at a time,
+# quicker to rebuild after an edit of one file.
+unity=-DZOME_UNITY=${ZOME_UNITY:-ON}
 san_flags=(-DCMAKE_C_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG"
            -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -gline-tables-only -DNDEBUG")
 fuzz_targets=(fuzz_obj fuzz_stl fuzz_ply fuzz_off fuzz_gltf fuzz_glb fuzz_vef fuzz_zome_json fuzz_share_link)
 for flavour in "$@"; do
   dir="build/$flavour"; targets=()
   case "$flavour" in
-    native) cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON >/dev/null ;;
+    native) cmake -S . -B build/native -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON "$unity" >/dev/null ;;
     wasm)   targets=(zome_tests zomeify)
-            emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON >/dev/null ;;
+            emcmake cmake -S . -B build/wasm -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON "$unity" >/dev/null ;;
     asan|fuzz)
             dir=build/asan
             [ "$flavour" = fuzz ] && targets=("${fuzz_targets[@]}")
             CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${san_flags[@]}" -DZOME_BUILD_FUZZ=ON \
-              -DZOME_SANITIZE="address;undefined" -DZOME_BUILD_BENCH=OFF -DZOME_STRICT=ON >/dev/null ;;
+              -DZOME_SANITIZE="address;undefined" -DZOME_BUILD_BENCH=OFF -DZOME_STRICT=ON "$unity" >/dev/null ;;
     tsan)   dir=build/tsan-lane; targets=(zome_tests)
             CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo "${san_flags[@]}" -DZOME_SANITIZE=thread \
-              -DZOME_BUILD_BENCH=OFF -DZOME_PARALLEL_TESTS_ONLY=ON >/dev/null ;;
+              -DZOME_BUILD_BENCH=OFF -DZOME_PARALLEL_TESTS_ONLY=ON "$unity" >/dev/null ;;
     *) echo "build.sh: unknown flavour '$flavour'" >&2; exit 2 ;;
   esac
   echo "build: $flavour"

@@ -201,9 +201,8 @@ namespace {
 // Z0 of the loaded surface at `resolution`, and what the page shows of it: counts, genus against
 // the surface's, and the finished model's size and the kits for a run towards `target` balls (0:
 // Z0's count), which are kept for the run that follows (Session::named_kits_).
-std::tuple<InitialModel, nlohmann::json, KitEstimate> z0_estimate(const LoadedSurface& s, int resolution,
-                                                                  double b1 = 0.0, size_t target = 0,
-                                                                  bool with_kits = true)
+std::tuple<InitialModel, nlohmann::json, KitEstimate>
+z0_estimate(const LoadedSurface& s, int resolution, double b1 = 0.0, size_t target = 0, bool with_kits = true)
 {
     // Z0 as a run builds it (z0_choice.h), so the estimate's ball count is the run's starting model.
     InitialModel z0 =

@@ -11,12 +11,12 @@ for flavour in mt st; do
   if [ $flavour = mt ]; then
     dir=build/wasm   # tests/build.sh wasm configures it identically
     [ -f "$dir/CMakeCache.txt" ] ||
-      emcmake cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON >/dev/null
+      emcmake cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON -DZOME_UNITY="${ZOME_UNITY:-ON}" >/dev/null
   else
     dir=build/web-st
     [ -f "$dir/CMakeCache.txt" ] ||
       emcmake cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=Release -DZOME_STRICT=ON -DZOME_BUILD_TESTS=OFF \
-        -DZOME_BUILD_BENCH=OFF -DZOME_WASM_THREADS=OFF >/dev/null
+        -DZOME_BUILD_BENCH=OFF -DZOME_WASM_THREADS=OFF -DZOME_UNITY="${ZOME_UNITY:-ON}" >/dev/null
   fi
   echo "build: web-$flavour ($dir)"
   cmake --build "$dir" -j"$jobs" --target zomeify_web

@@ -34,7 +34,7 @@ public:
     //! about half a million); elements and queries outside it clamp to the border cells.
     ElementGrid(const Box3& domain, double cell)
     {
-        constexpr double kMaxCells = 5.0e5;
+        constexpr double kMaxGridCells = 5.0e5;
         const Vec3 extent = domain.extent();
         const auto cells_for = [&](double c) {
             double n = 1.0;
@@ -42,7 +42,7 @@ public:
                 n *= std::floor(extent[k] / c) + 1.0;
             return n;
         };
-        while (cells_for(cell) > kMaxCells)
+        while (cells_for(cell) > kMaxGridCells)
             cell *= 1.25;
         origin_ = domain.empty() ? Vec3::Zero() : domain.min;
         inverse_cell_ = 1.0 / cell;

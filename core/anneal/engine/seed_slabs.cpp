@@ -4,13 +4,14 @@
 #include <array>
 #include <utility>
 
+#include "core/zome/qphi.h"
+
 namespace zomeify {
 
 namespace {
 
 // The six 5-fold axes of the icosahedron, (0, ±1, φ) and its cyclic permutations: well spread,
 // so successive sweeps cut the model along quite different planes.
-constexpr double kPhi = 1.6180339887498949;
 constexpr std::array<std::array<double, 3>, 6> kDirections{
     {{0, 1, kPhi}, {0, -1, kPhi}, {1, kPhi, 0}, {-1, kPhi, 0}, {kPhi, 0, 1}, {-kPhi, 0, 1}}};
 
