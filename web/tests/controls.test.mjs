@@ -263,3 +263,37 @@ test('mirror: the switch follows the core\'s judgement of the shape until the pe
   controls.showMirror(lopsided);
   assert.equal(controls.get().mirror, 'off');
 });
+
+test('a shape put up in steps: one estimate after it, without kits beside its model, with them elsewhere', async () => {
+  const root = fakeRoot();
+  const calls = [];
+  const controls = new Controls(root, {
+    estimate: async (r, target, opts) => {
+      calls.push({ r, kits: opts?.kits });
+      return opts?.kits === false ? { nodes: 10 * r, struts: 20 * r, kept: true }
+        : { nodes: 10 * r, struts: 20 * r, kept: true, kit_plan: '1 Creator 3', kit_plan_low: '' };
+    },
+  });
+  clearTimeout(controls.estimateTimer);
+  await controls.holdEstimates(async () => {
+    controls.set({ resolution: 6 }); // a step in between: no estimate for it
+    controls.set({ resolution: 8 });
+    controls.setResult(8); // the model on screen was made at 8 cells
+    await new Promise((resolve) => setTimeout(resolve, 250)); // past the estimate's 200 ms debounce
+    assert.deepEqual(calls, [], 'no estimate while held');
+  });
+  await new Promise((resolve) => setTimeout(resolve, 0));
+  assert.deepEqual(calls, [{ r: 8, kits: false }]);
+  assert.match(root.querySelector('#estimate').textContent, /made at 8 cells/);
+  // Another resolution names kits: the line's estimate is asked with them.
+  controls.set({ resolution: 10 });
+  await new Promise((resolve) => setTimeout(resolve, 250));
+  assert.deepEqual(calls.at(-1), { r: 10, kits: true });
+  assert.match(root.querySelector('#estimate').textContent, /kits: 1 Creator 3/);
+  // Back beside the model, then away from it with the kit-less answer on record: asked again with kits.
+  controls.showEstimate({ nodes: 80, struts: 160, kept: true }, 8);
+  controls.setResult(0);
+  await new Promise((resolve) => setTimeout(resolve, 250));
+  assert.deepEqual(calls.at(-1), { r: 10, kits: true });
+  clearTimeout(controls.estimateTimer);
+});
