@@ -90,17 +90,15 @@ std::string guarded(F&& body)
     }
 }
 
-// A bill for a finished model of `balls` balls from Z0 across its cells: its size at real scale,
-// and the kits (kit_estimate.h): "kit_plan" the kits named, which the run keeps within, and
-// "kit_plan_low" the plan of the quick pass's own mix ("typically").
-nlohmann::json size_estimate(const InitialModel& z0, const KitEstimate& kits)
+// The kits for a run from Z0 (kit_estimate.h): "kit_plan" the kits named, which the run keeps
+// within, and "kit_plan_low" the plan of the quick pass's own mix ("typically").
+nlohmann::json kits_estimate(const KitEstimate& kits)
 {
     size_t count = 0;
     for (const auto& [kit, n] : kits.plan.kits)
         count += n;
     const KitPlan low = plan_kits(kits.quick);
-    return {{"size_mm", z0_built_size_cm(z0.model) * 10.0},
-            {"kits", count},
+    return {{"kits", count},
             {"kit_plan", kits_text(kits.plan.kits)},
             {"kit_plan_parts", kits.plan.parts_bought},
             {"kit_plan_low", kits_text(low.kits)},
@@ -217,14 +215,12 @@ z0_estimate(const LoadedSurface& s, int resolution, double b1 = 0.0, size_t targ
     out["surface_genus"] = s.report.genus;
     out["kept"] = z0.report.valid && z0.report.topology.genus == s.report.genus;
     out["seconds"] = z0.report.seconds;
-    out["z0_seconds"] = z0.report.seconds; // kept when `seconds` is the automatic search's time
+    out["z0_seconds"] = z0.report.seconds;              // kept when `seconds` is the automatic search's time
+    out["size_mm"] = z0_built_size_cm(z0.model) * 10.0; // the finished model's size at real scale
     if (!with_kits)
-    {
-        out["size_mm"] = z0_built_size_cm(z0.model) * 10.0;
         return {std::move(z0), std::move(out), KitEstimate{}};
-    }
     KitEstimate kits = estimate_kits(*s.projector, z0, target);
-    out.update(size_estimate(z0, kits));
+    out.update(kits_estimate(kits));
     return {std::move(z0), std::move(out), std::move(kits)};
 }
 

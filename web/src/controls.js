@@ -228,16 +228,16 @@ export class Controls {
     this.el('estimate').textContent = 'Choosing a resolution for this shape…';
   }
 
-  /**
-   * The model on screen is the loaded shape's, made at `resolution` (0: it is not): while the
-   * controls show that resolution, its kit plan under Parts is the one kit sentence, so the
-   * estimate line names no kits of its own.
-   */
   /** True while the controls show the resolution the model on screen was made at. */
   showsResult(resolution) {
     return this.resultResolution > 0 && this.resultResolution === resolution;
   }
 
+  /**
+   * The model on screen is the loaded shape's, made at `resolution` (0: it is not): while the
+   * controls show that resolution, its kit plan under Parts is the one kit sentence, so the
+   * estimate line names no kits of its own.
+   */
   setResult(resolution) {
     this.resultResolution = resolution > 0 ? resolution : 0;
     if (this.lastEstimate) this.showEstimate(this.lastEstimate, this.lastEstimate.resolution);
